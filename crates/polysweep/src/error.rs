@@ -1,0 +1,48 @@
+//! The one error type. Bad input names where it is: operand, polygon, ring and vertex.
+
+use std::fmt;
+
+/// Where a bad vertex is: indices into the operands passed to the operation (0 = subject, 1 = clipping for the
+/// binary operations), the polygon within the operand, the ring within the polygon (0 = exterior, 1.. = holes)
+/// and the vertex within the ring.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Location {
+    pub operand: usize,
+    pub polygon: usize,
+    pub ring: usize,
+    pub vertex: usize,
+}
+
+impl fmt::Display for Location {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "operand {}, polygon {}, ring {}, vertex {}", self.operand, self.polygon, self.ring, self.vertex)
+    }
+}
+
+/// Why an operation could not be carried out.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Error {
+    /// A coordinate is NaN or infinite.
+    NonFiniteCoordinate { at: Location, value: f64 },
+    /// A coordinate's magnitude is outside the range the exact predicates are proven for (see
+    /// [`crate::MAX_COORDINATE`] and [`crate::MIN_COORDINATE`]).
+    CoordinateOutOfRange { at: Location, value: f64 },
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::NonFiniteCoordinate { at, value } => {
+                write!(f, "{at}: coordinate {value} is not a finite number")
+            }
+            Error::CoordinateOutOfRange { at, value } => write!(
+                f,
+                "{at}: coordinate {value:e} is out of range (its magnitude must be 0 or between {:e} and {:e})",
+                crate::MIN_COORDINATE,
+                crate::MAX_COORDINATE
+            ),
+        }
+    }
+}
+
+impl std::error::Error for Error {}

@@ -1,0 +1,174 @@
+//! Sweep events and the event queue (§3, Fig. 5, Fig. 8; the event order of §4 and §7.1).
+//!
+//! An event is one endpoint of an edge and stands for the edge (Fig. 8): `point`, the `other` endpoint, `left`,
+//! the operand (the paper's `pl`). The paper's `inOut` and `inside` flags are generalised to winding counts
+//! (`coverage_above`, see [`crate::select`]); its edge `type` of §7.2 is replaced by merging overlapping edges (see
+//! [`crate::subdivide`]).
+//!
+//! Departures from the paper:
+//! - Every edge remembers the input segment it lies on (`line`): sub-edges made by subdivision lie exactly on it,
+//!   so predicates are evaluated against input coordinates only (see the robustness page).
+//! - The queue is a sorted array of the initial 2n events plus a binary heap for the events that subdivision adds.
+//!   Popping takes the smaller head, so the bulk of the work is one sort; the order is the same as one priority
+//!   queue's.
+
+use crate::exact::{Exact, Line, SweepPoint};
+use std::cmp::Ordering;
+
+pub(crate) type EventId = u32;
+/// "No event" / "no node".
+pub(crate) const NONE: u32 = u32::MAX;
+
+/// Subject or clipping operand (the paper's `pl`).
+pub(crate) type Operand = usize;
+
+#[derive(Clone, Debug)]
+pub(crate) struct SweepEvent {
+    pub point: SweepPoint,
+    pub other: EventId,
+    pub left: bool,
+    /// The input segment this edge lies on, oriented in sweep order.
+    pub line: Line,
+    pub operand: Operand,
+    /// Index of the input segment: a stable tie-break shared by all fragments of one input edge.
+    pub segment: u32,
+    /// How crossing this edge upwards (or, when vertical, from right to left) changes the winding number of each
+    /// operand. Overlapping edges merged into this one add theirs (§7.2).
+    pub winding: [i32; 2],
+    /// Left events only: winding numbers of the region just above the edge (§4, Fig. 9).
+    pub coverage_above: [i32; 2],
+    /// Left events only: the edge is part of the result's boundary (§4, Fig. 10).
+    pub in_result: bool,
+    /// Left events only: the result lies above the edge (left of it when vertical).
+    pub result_above: bool,
+    /// Left events only: the closest non-vertical result edge below this one when it was inserted, used to nest
+    /// holes (§5).
+    pub result_below: EventId,
+    /// Left events only: the edge's node in the sweep-line status, `NONE` when not in it.
+    pub node: u32,
+    /// Left events only: index of the edge among the result edges, once recorded.
+    pub result_edge: u32,
+    /// Index of the output vertex at this event's point, assigned when the event is processed.
+    pub vertex: u32,
+}
+
+impl SweepEvent {
+    pub fn new(point: SweepPoint, left: bool, line: Line, operand: Operand, segment: u32, winding: i32) -> Self {
+        let mut w = [0; 2];
+        w[operand] = winding;
+        SweepEvent {
+            point,
+            other: NONE,
+            left,
+            line,
+            operand,
+            segment,
+            winding: w,
+            coverage_above: [0; 2],
+            in_result: false,
+            result_above: false,
+            result_below: NONE,
+            node: NONE,
+            result_edge: NONE,
+            vertex: NONE,
+        }
+    }
+
+    /// A copy of this edge's identity (line, operand, winding) for a new event of one of its fragments.
+    pub fn fragment(&self, point: SweepPoint, left: bool, other: EventId) -> Self {
+        SweepEvent { point, left, other, winding: self.winding, ..SweepEvent::new(point, left, self.line, self.operand, self.segment, 0) }
+    }
+}
+
+/// The order in which events are processed (§4 and §7.1): by point, left to right and bottom to top; at one point
+/// right endpoints before left ones; then the lower edge first; collinear edges by operand and input segment.
+pub(crate) fn event_order(events: &[SweepEvent], exact: &Exact, a: EventId, b: EventId) -> Ordering {
+    let (ea, eb) = (&events[a as usize], &events[b as usize]);
+    exact
+        .cmp_points(&ea.point, &eb.point)
+        .then(ea.left.cmp(&eb.left))
+        // `b`'s far endpoint above `a`'s line means `a` is the lower edge, so `a` goes first.
+        .then_with(|| exact.orient(&ea.line, &events[eb.other as usize].point).reverse())
+        .then(ea.operand.cmp(&eb.operand))
+        .then(ea.segment.cmp(&eb.segment))
+        .then(a.cmp(&b))
+}
+
+/// The event-point set Q of Fig. 5.
+#[derive(Default)]
+pub(crate) struct EventQueue {
+    initial: Vec<EventId>,
+    next_initial: usize,
+    heap: Vec<EventId>,
+}
+
+impl EventQueue {
+    pub fn new(mut initial: Vec<EventId>, order: impl Fn(EventId, EventId) -> Ordering) -> Self {
+        initial.sort_unstable_by(|&a, &b| order(a, b));
+        EventQueue { initial, next_initial: 0, heap: Vec::new() }
+    }
+
+    pub fn push(&mut self, event: EventId, order: impl Fn(EventId, EventId) -> Ordering) {
+        self.heap.push(event);
+        let mut child = self.heap.len() - 1;
+        while child > 0 {
+            let parent = (child - 1) / 2;
+            if order(self.heap[child], self.heap[parent]) != Ordering::Less {
+                break;
+            }
+            self.heap.swap(child, parent);
+            child = parent;
+        }
+    }
+
+    pub fn pop(&mut self, order: impl Fn(EventId, EventId) -> Ordering) -> Option<EventId> {
+        let initial = self.initial.get(self.next_initial).copied();
+        let from_heap = match (initial, self.heap.first()) {
+            (None, None) => return None,
+            (Some(_), None) => false,
+            (None, Some(_)) => true,
+            (Some(i), Some(&h)) => order(h, i) == Ordering::Less,
+        };
+        if !from_heap {
+            self.next_initial += 1;
+            return initial;
+        }
+        let top = self.heap.swap_remove(0);
+        let mut parent = 0;
+        loop {
+            let (l, r) = (2 * parent + 1, 2 * parent + 2);
+            let mut smallest = parent;
+            for child in [l, r] {
+                if child < self.heap.len() && order(self.heap[child], self.heap[smallest]) == Ordering::Less {
+                    smallest = child;
+                }
+            }
+            if smallest == parent {
+                break;
+            }
+            self.heap.swap(parent, smallest);
+            parent = smallest;
+        }
+        Some(top)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn queue_pops_in_order_across_initial_and_pushed_events() {
+        let keys = [5, 1, 9, 3, 7, 2, 8];
+        let order = |a: EventId, b: EventId| keys[a as usize].cmp(&keys[b as usize]);
+        let mut queue = EventQueue::new(vec![0, 1, 2], order);
+        for e in [3, 4, 5, 6] {
+            queue.push(e, order);
+        }
+        let mut popped = Vec::new();
+        while let Some(e) = queue.pop(order) {
+            popped.push(keys[e as usize]);
+        }
+        assert_eq!(popped, [1, 2, 3, 5, 7, 8, 9]);
+    }
+}

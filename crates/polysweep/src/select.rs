@@ -1,0 +1,148 @@
+//! Selecting the result edges (§4, Fig. 9, Fig. 10; fill rules of §7.3).
+//!
+//! The paper reads three flags of the edge below (`pl`, `inOut`, `inside`, Fig. 9) to know whether an edge lies
+//! inside the other polygon. Here every edge carries the winding numbers of both operands for the region just
+//! above it (`coverage_above`), computed the same way from the edge below: its counts plus this edge's winding.
+//! Under the even-odd rule (the paper's, §7.3) the parity of those counts is exactly the paper's pair of flags:
+//! `inOut` of an edge is "its own operand's count below is odd" and `inside` is "the other operand's count is
+//! odd". Counts rather than bits give the non-zero fill rule with the same code.
+//!
+//! An edge is in the result when the result holds on one side of it and not on the other. That one comparison
+//! is the whole of Fig. 10 too: overlapping edges are merged into one edge carrying both windings (§7.2, see
+//! [`crate::subdivide`]), and for that edge "the result differs across it" is exactly the table of Fig. 10:
+//! SAME_TRANSITION fragments are kept by intersection and union, DIFFERENT_TRANSITION fragments by difference,
+//! and xor keeps neither (see the tests below).
+//!
+//! Departure: vertical edges (§7.1) do not cross the upward ray at `x + dx`, so the coverage above a vertical
+//! edge is the coverage below it; what the vertical edge separates is its right side (that coverage) from its
+//! left side (that coverage plus its winding).
+
+use crate::events::{EventId, SweepEvent, NONE};
+
+/// A Boolean operation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Operation {
+    Intersection,
+    Union,
+    /// Subject minus clipping.
+    Difference,
+    Xor,
+}
+
+/// How the rings of one operand define its interior.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum FillRule {
+    /// A point is inside when a ray from it crosses the operand's rings an odd number of times (§7.3). Ring
+    /// orientation does not matter.
+    #[default]
+    EvenOdd,
+    /// A point is inside when the winding number of the operand's rings around it is not zero (as in Clipper2
+    /// and i_overlay): rings are taken with their orientation as given.
+    NonZero,
+}
+
+impl FillRule {
+    pub(crate) fn is_inside(self, winding: i32) -> bool {
+        match self {
+            FillRule::EvenOdd => winding % 2 != 0,
+            FillRule::NonZero => winding != 0,
+        }
+    }
+}
+
+impl Operation {
+    /// The selection table: is a region with this membership in the result?
+    pub(crate) fn keeps(self, in_subject: bool, in_clipping: bool) -> bool {
+        match self {
+            Operation::Intersection => in_subject && in_clipping,
+            Operation::Union => in_subject || in_clipping,
+            Operation::Difference => in_subject && !in_clipping,
+            Operation::Xor => in_subject != in_clipping,
+        }
+    }
+}
+
+/// The operation and fill rule of one run.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Selection {
+    pub operation: Operation,
+    pub fill_rule: FillRule,
+}
+
+impl Selection {
+    pub fn in_result(&self, coverage: [i32; 2]) -> bool {
+        self.operation.keeps(self.fill_rule.is_inside(coverage[0]), self.fill_rule.is_inside(coverage[1]))
+    }
+
+    /// Fig. 9 generalised: sets the coverage and result flags of the left event `edge`, given the edge `below` it
+    /// in S (or `NONE`).
+    pub fn set_flags(&self, events: &mut [SweepEvent], edge: EventId, below: EventId) {
+        let (coverage_below, result_below) = match events.get(below as usize) {
+            None => ([0; 2], NONE),
+            Some(b) if b.in_result && !b.line.is_vertical() => (b.coverage_above, below),
+            Some(b) => (b.coverage_above, b.result_below),
+        };
+        let e = &mut events[edge as usize];
+        let crossed = [coverage_below[0] + e.winding[0], coverage_below[1] + e.winding[1]];
+        e.coverage_above = if e.line.is_vertical() { coverage_below } else { crossed };
+        e.result_above = self.in_result(crossed);
+        e.in_result = self.in_result(coverage_below) != e.result_above;
+        e.result_below = result_below;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use Operation::*;
+
+    /// Fig. 10: which of two overlapping edges' fragments each operation keeps. An overlapping pair is one merged
+    /// edge; `below` is the coverage under it.
+    fn keeps_overlap(operation: Operation, below: [i32; 2], winding: [i32; 2]) -> bool {
+        let s = Selection { operation, fill_rule: FillRule::EvenOdd };
+        s.in_result(below) != s.in_result([below[0] + winding[0], below[1] + winding[1]])
+    }
+
+    #[test]
+    fn figure_10_same_and_different_transition() {
+        // SAME_TRANSITION: both polygons on the same side (both above).
+        let same = ([0, 0], [1, 1]);
+        // DIFFERENT_TRANSITION: subject above, clipping below.
+        let different = ([0, 1], [1, -1]);
+        for (operation, keep_same, keep_different) in
+            [(Intersection, true, false), (Union, true, false), (Difference, false, true), (Xor, false, false)]
+        {
+            assert_eq!(keeps_overlap(operation, same.0, same.1), keep_same, "{operation:?} same transition");
+            assert_eq!(keeps_overlap(operation, different.0, different.1), keep_different, "{operation:?} different");
+        }
+    }
+
+    #[test]
+    fn figure_9_flags_are_the_parities_of_the_counts() {
+        // An edge of the clipping polygon above a subject edge, both bounding regions from below.
+        let s = Selection { operation: Intersection, fill_rule: FillRule::EvenOdd };
+        let mut events = vec![
+            SweepEvent::new(crate::exact::SweepPoint::input([0.0, 0.0]), true, line(), 0, 0, 1),
+            SweepEvent::new(crate::exact::SweepPoint::input([0.0, 1.0]), true, line(), 1, 1, 1),
+        ];
+        s.set_flags(&mut events, 0, NONE);
+        s.set_flags(&mut events, 1, 0);
+        // Paper: ple null => inside = inOut = false; so the subject edge is not inside the clipping polygon.
+        assert!(!events[0].in_result);
+        // Second edge: inside the subject (its `inside` flag is !ple.inOut = true), so it bounds the intersection.
+        assert!(events[1].in_result && events[1].result_above);
+        assert_eq!(events[1].result_below, NONE, "the edge below is not in the result");
+    }
+
+    #[test]
+    fn non_zero_fills_doubly_wound_regions() {
+        let s = Selection { operation: Union, fill_rule: FillRule::NonZero };
+        assert!(s.in_result([2, 0]));
+        let e = Selection { operation: Union, fill_rule: FillRule::EvenOdd };
+        assert!(!e.in_result([2, 0]));
+    }
+
+    fn line() -> crate::exact::Line {
+        crate::exact::Line { a: [0.0, 0.0], b: [1.0, 0.0] }
+    }
+}

@@ -1,0 +1,199 @@
+//! The sweep-line status S (§3, §6): the edges crossing the sweep line, bottom to top.
+//!
+//! A treap (a binary search tree balanced by random priorities) with parent links, so that insertion is
+//! O(log n) expected, and removal and the neighbour queries of Fig. 5 (`S.prev`, `S.next`) need no search: each
+//! edge keeps its node. The order itself (§3, §7.1) is decided by the caller's comparison, see
+//! [`crate::sweep`]. No recursion: the depth is random, never driven by the input.
+//!
+//! Departure from the paper: the paper uses an STL `set` and finds an edge again by comparison (`S.find`). Finding
+//! by handle means removal never depends on comparisons made later.
+
+use crate::events::{EventId, NONE};
+
+#[derive(Clone, Copy)]
+struct Node {
+    event: EventId,
+    parent: u32,
+    children: [u32; 2],
+    priority: u32,
+}
+
+pub(crate) struct Status {
+    nodes: Vec<Node>,
+    free: Vec<u32>,
+    root: u32,
+    random: u32,
+}
+
+impl Default for Status {
+    fn default() -> Self {
+        Status { nodes: Vec::new(), free: Vec::new(), root: NONE, random: 0x9E37_79B9 }
+    }
+}
+
+impl Status {
+    pub fn event(&self, node: u32) -> EventId {
+        self.nodes[node as usize].event
+    }
+
+    /// Inserts `event`; `below(event, other)` says whether it goes below an edge already in S.
+    pub fn insert(&mut self, event: EventId, below: impl Fn(EventId, EventId) -> bool) -> u32 {
+        // xorshift: deterministic priorities, so runs are reproducible.
+        self.random ^= self.random << 13;
+        self.random ^= self.random >> 17;
+        self.random ^= self.random << 5;
+        let node = Node { event, parent: NONE, children: [NONE; 2], priority: self.random };
+        let id = match self.free.pop() {
+            Some(id) => {
+                self.nodes[id as usize] = node;
+                id
+            }
+            None => {
+                self.nodes.push(node);
+                (self.nodes.len() - 1) as u32
+            }
+        };
+        if self.root == NONE {
+            self.root = id;
+            return id;
+        }
+        let mut current = self.root;
+        loop {
+            let side = if below(event, self.nodes[current as usize].event) { 0 } else { 1 };
+            let child = self.nodes[current as usize].children[side];
+            if child == NONE {
+                self.nodes[current as usize].children[side] = id;
+                self.nodes[id as usize].parent = current;
+                break;
+            }
+            current = child;
+        }
+        while let Some(parent) = self.parent(id) {
+            if self.nodes[id as usize].priority >= self.nodes[parent as usize].priority {
+                break;
+            }
+            self.rotate_up(id);
+        }
+        id
+    }
+
+    pub fn remove(&mut self, node: u32) {
+        loop {
+            let [l, r] = self.nodes[node as usize].children;
+            let child = match (l, r) {
+                (NONE, NONE) => break,
+                (c, NONE) | (NONE, c) => c,
+                _ if self.nodes[l as usize].priority < self.nodes[r as usize].priority => l,
+                _ => r,
+            };
+            self.rotate_up(child);
+        }
+        self.replace_child(self.nodes[node as usize].parent, node, NONE);
+        self.free.push(node);
+    }
+
+    /// The neighbour below (`side` 0) or above (`side` 1), or `NONE`.
+    fn neighbour(&self, node: u32, side: usize) -> u32 {
+        let mut n = self.nodes[node as usize].children[side];
+        if n != NONE {
+            while self.nodes[n as usize].children[1 - side] != NONE {
+                n = self.nodes[n as usize].children[1 - side];
+            }
+            return n;
+        }
+        let mut child = node;
+        while let Some(parent) = self.parent(child) {
+            if self.nodes[parent as usize].children[1 - side] == child {
+                return parent;
+            }
+            child = parent;
+        }
+        NONE
+    }
+
+    pub fn prev(&self, node: u32) -> u32 {
+        self.neighbour(node, 0)
+    }
+
+    pub fn next(&self, node: u32) -> u32 {
+        self.neighbour(node, 1)
+    }
+
+    fn parent(&self, node: u32) -> Option<u32> {
+        Some(self.nodes[node as usize].parent).filter(|&p| p != NONE)
+    }
+
+    /// Makes `new` the child of `parent` in place of `old` (or the root when `parent` is `NONE`).
+    fn replace_child(&mut self, parent: u32, old: u32, new: u32) {
+        if parent == NONE {
+            self.root = new;
+        } else {
+            let children = &mut self.nodes[parent as usize].children;
+            let side = if children[0] == old { 0 } else { 1 };
+            children[side] = new;
+        }
+        if new != NONE {
+            self.nodes[new as usize].parent = parent;
+        }
+    }
+
+    /// Rotates `node` above its parent, keeping the in-order sequence.
+    fn rotate_up(&mut self, node: u32) {
+        let parent = self.nodes[node as usize].parent;
+        let grandparent = self.nodes[parent as usize].parent;
+        let side = if self.nodes[parent as usize].children[0] == node { 0 } else { 1 };
+        let inner = self.nodes[node as usize].children[1 - side];
+        self.nodes[parent as usize].children[side] = inner;
+        if inner != NONE {
+            self.nodes[inner as usize].parent = parent;
+        }
+        self.nodes[node as usize].children[1 - side] = parent;
+        self.nodes[parent as usize].parent = node;
+        self.replace_child(grandparent, parent, node);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn in_order(status: &Status) -> Vec<EventId> {
+        let mut out = Vec::new();
+        let mut node = status.root;
+        if node == NONE {
+            return out;
+        }
+        while status.prev(node) != NONE {
+            node = status.prev(node);
+        }
+        while node != NONE {
+            out.push(status.event(node));
+            node = status.next(node);
+        }
+        out
+    }
+
+    #[test]
+    fn keeps_order_through_inserts_and_removals() {
+        let mut status = Status::default();
+        let mut nodes = Vec::new();
+        // Insert a permutation of 0..200 ordered by value.
+        for i in 0..200u32 {
+            let v = (i * 73) % 200;
+            nodes.push((v, status.insert(v, |a, b| a < b)));
+        }
+        assert_eq!(in_order(&status), (0..200).collect::<Vec<_>>());
+        for &(v, node) in nodes.iter().filter(|(v, _)| v % 3 == 0) {
+            status.remove(node);
+            assert!(!in_order(&status).contains(&v));
+        }
+        let expected: Vec<u32> = (0..200).filter(|v| v % 3 != 0).collect();
+        assert_eq!(in_order(&status), expected);
+        // Neighbour queries agree with the in-order sequence.
+        for &(v, node) in nodes.iter().filter(|(v, _)| v % 3 != 0) {
+            let i = expected.iter().position(|&x| x == v).unwrap();
+            let prev = status.prev(node);
+            assert_eq!(if prev == NONE { None } else { Some(status.event(prev)) }, i.checked_sub(1).map(|j| expected[j]));
+        }
+    }
+}

@@ -1,0 +1,116 @@
+//! possibleInter and the subdivision of edges (§3, Fig. 6, Fig. 7; overlapping edges §7.2; self-intersections
+//! §7.3).
+//!
+//! Two neighbours in S are tested with four exact orientation tests. When they meet at one point, each edge that
+//! has the point strictly inside is split there (Fig. 6): its left event keeps the part before the point, a new
+//! right and a new left event go into Q. When they are collinear and overlap, each is split at the other's
+//! endpoints inside it; the fragments that then coincide are merged into one edge carrying both windings.
+//!
+//! Departures from the paper:
+//! - §7.3: intersections are found between all edges, of one operand or of both, always. Self-intersecting input
+//!   needs it, and an exact sweep needs the status to be a true order of non-crossing edges.
+//! - §7.2: the paper keeps both coinciding edges and marks one NON_CONTRIBUTING and the other SAME_TRANSITION or
+//!   DIFFERENT_TRANSITION. Merging them instead keeps one edge whose winding is the sum of both; the selection
+//!   rule of [`crate::select`] then yields Fig. 10 exactly, also for more than two coinciding edges and for edges
+//!   of the same operand (which cancel under even-odd).
+//! - Every split point lies exactly on both edges' input lines (an endpoint on a line by an exact test, or an
+//!   exact crossing), so fragments never move: nothing is rounded until the output.
+
+use crate::events::EventId;
+use crate::exact::SweepPoint;
+use crate::sweep::Sweep;
+use std::cmp::Ordering::{Equal, Less};
+
+impl Sweep {
+    /// possibleInter (Fig. 5) of two edges, given as left events, `lower` below `upper` in S.
+    pub(crate) fn possible_inter(&mut self, lower: EventId, upper: EventId) {
+        let (l1, l2) = (self.event(lower).line, self.event(upper).line);
+        let (a1, b1) = (self.point(lower), self.other_point(lower));
+        let (a2, b2) = (self.point(upper), self.other_point(upper));
+        let (s1, s2) = (self.exact.orient(&l2, &a1), self.exact.orient(&l2, &b1));
+        if s1 == s2 && s1 != Equal {
+            return; // `lower` lies on one side of `upper`'s line
+        }
+        let (s3, s4) = (self.exact.orient(&l1, &a2), self.exact.orient(&l1, &b2));
+        if s3 == s4 && s3 != Equal {
+            return;
+        }
+        if s1 == Equal && s2 == Equal {
+            return self.overlap(lower, upper);
+        }
+        // One common point. Fig. 6: an endpoint of one edge on the other, or a proper crossing.
+        let meeting = match (s1, s2, s3, s4) {
+            (Equal, ..) => a1,
+            (_, Equal, ..) => b1,
+            (_, _, Equal, _) => a2,
+            (_, _, _, Equal) => b2,
+            _ => {
+                let x = self.exact.crossing(&l1, &l2);
+                self.split(lower, x);
+                self.split(upper, x);
+                return;
+            }
+        };
+        for edge in [lower, upper] {
+            if self.strictly_inside(edge, &meeting) {
+                self.split(edge, meeting);
+            }
+        }
+    }
+
+    fn strictly_inside(&self, edge: EventId, p: &SweepPoint) -> bool {
+        self.exact.cmp_points(&self.point(edge), p) == Less && self.exact.cmp_points(p, &self.other_point(edge)) == Less
+    }
+
+    /// §7.2: two collinear edges. Splits each at the other's endpoints that lie inside it, then merges the
+    /// fragments that coincide.
+    fn overlap(&mut self, lower: EventId, upper: EventId) {
+        let (a1, b1) = (self.point(lower), self.other_point(lower));
+        let (a2, b2) = (self.point(upper), self.other_point(upper));
+        if self.exact.cmp_points(&b1, &a2) != std::cmp::Ordering::Greater
+            || self.exact.cmp_points(&b2, &a1) != std::cmp::Ordering::Greater
+        {
+            return; // they touch at an endpoint at most
+        }
+        for (edge, [first, last]) in [(lower, [a2, b2]), (upper, [a1, b1])] {
+            // The far point first, so that `edge` keeps its left part and the second split cuts that part.
+            for p in [last, first] {
+                if self.strictly_inside(edge, &p) {
+                    self.split(edge, p);
+                }
+            }
+        }
+        if self.exact.cmp_points(&a1, &a2) == Equal {
+            // Both now run from the common left point to the nearer right point: one edge from now on.
+            // The edge being inserted is the one that leaves: edges above the other may already refer to it.
+            let (keep, merged) = if lower == self.inserting { (upper, lower) } else { (lower, upper) };
+            self.merge(keep, merged);
+        }
+    }
+
+    /// Fig. 6: splits the edge of left event `edge` at `p`, which lies on it strictly between its endpoints.
+    pub(crate) fn split(&mut self, edge: EventId, p: SweepPoint) {
+        let right = self.event(edge).other;
+        let (new_right, new_left) = (self.events.len() as EventId, self.events.len() as EventId + 1);
+        let base = self.event(edge).clone();
+        self.events.push(base.fragment(p, false, edge));
+        self.events.push(base.fragment(p, true, right));
+        self.events[edge as usize].other = new_right;
+        self.events[right as usize].other = new_left;
+        self.push(new_right);
+        self.push(new_left);
+    }
+
+    /// §7.2: `merged` coincides with `keep`; `keep` takes its winding and `merged` leaves S. The flags of `keep`
+    /// are set again from the edge below it.
+    fn merge(&mut self, keep: EventId, merged: EventId) {
+        let winding = self.event(merged).winding;
+        for (w, m) in self.events[keep as usize].winding.iter_mut().zip(winding) {
+            *w += m;
+        }
+        self.status.remove(self.event(merged).node);
+        self.events[merged as usize].node = crate::events::NONE;
+        let below = self.below(self.event(keep).node);
+        self.selection.set_flags(&mut self.events, keep, below);
+    }
+}

@@ -1,0 +1,213 @@
+//! The plane sweep of Fig. 5: events in order, the sweep-line status, and the result edges.
+//!
+//! ```text
+//! while Q is not empty:
+//!     event = Q.pop()
+//!     left endpoint:  insert its edge into S, set its flags from the edge below (Fig. 9),
+//!                     possibleInter with both neighbours (Fig. 6)
+//!     right endpoint: if its edge is in the result, record it; remove it from S;
+//!                     possibleInter of the two edges that become neighbours
+//! ```
+//!
+//! The status order (§3, §7.1) compares a new edge with an edge of S at the new edge's left endpoint `p`: the
+//! side of `p` from the other edge's line, or, when `p` is on that line, the side of the new edge's right
+//! endpoint. A vertical edge is placed by its lower endpoint and so goes above a non-vertical edge starting
+//! there (§7.1). Collinear edges are ordered by operand and input segment; they are merged as soon as they become
+//! identical (§7.2).
+//!
+//! Departure from the paper: when a new edge starts at a point `p` inside an edge of S (a vertex on an edge, Fig.
+//! 6), that edge is split at `p` and the new edge is put back in Q. The split makes a right endpoint at `p`, which
+//! §4 orders before every left endpoint at `p`; processing it first keeps the flags of Fig. 9 right.
+
+use crate::events::{event_order, EventId, EventQueue, SweepEvent, NONE};
+use crate::exact::{Exact, Line, SweepPoint};
+use crate::select::Selection;
+use std::cmp::Ordering;
+
+/// An edge of the result, oriented with the result on its left.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ResultEdge {
+    pub from: u32,
+    pub to: u32,
+    pub line: Line,
+    /// Travelled along `line` (left to right), or against it.
+    pub forward: bool,
+    /// The closest non-vertical result edge below this one, as a left event (later: a result edge index).
+    pub below: u32,
+}
+
+pub(crate) struct Sweep {
+    pub events: Vec<SweepEvent>,
+    pub exact: Exact,
+    pub queue: EventQueue,
+    pub status: crate::status::Status,
+    pub selection: Selection,
+    /// The point being processed.
+    pub current: SweepPoint,
+    /// Distinct event points in sweep order: the vertices of the result.
+    pub vertices: Vec<SweepPoint>,
+    pub result: Vec<ResultEdge>,
+    /// Events beyond this x cannot add result edges (§8's usual shortcut: past the end of the subject, or of
+    /// either operand for an intersection).
+    pub stop_x: f64,
+    /// The left event being inserted, or `NONE`.
+    pub inserting: EventId,
+}
+
+impl Sweep {
+    pub fn new(events: Vec<SweepEvent>, selection: Selection, stop_x: f64) -> Self {
+        let exact = Exact::default();
+        let left_events = (0..events.len() as u32).collect();
+        let queue = EventQueue::new(left_events, |a, b| event_order(&events, &exact, a, b));
+        Sweep {
+            events,
+            exact,
+            queue,
+            status: Default::default(),
+            selection,
+            current: SweepPoint::input([f64::NEG_INFINITY; 2]),
+            vertices: Vec::new(),
+            result: Vec::new(),
+            stop_x,
+            inserting: NONE,
+        }
+    }
+
+    pub fn event(&self, e: EventId) -> &SweepEvent {
+        &self.events[e as usize]
+    }
+
+    pub fn point(&self, e: EventId) -> SweepPoint {
+        self.events[e as usize].point
+    }
+
+    pub fn other_point(&self, e: EventId) -> SweepPoint {
+        self.point(self.event(e).other)
+    }
+
+    pub fn push(&mut self, e: EventId) {
+        let (events, exact) = (&self.events, &self.exact);
+        self.queue.push(e, |a, b| event_order(events, exact, a, b));
+    }
+
+    /// The edge below `node` in S, as a left event, or `NONE`.
+    pub fn below(&self, node: u32) -> EventId {
+        match self.status.prev(node) {
+            NONE => NONE,
+            n => self.status.event(n),
+        }
+    }
+
+    fn above(&self, node: u32) -> EventId {
+        match self.status.next(node) {
+            NONE => NONE,
+            n => self.status.event(n),
+        }
+    }
+
+    /// Fig. 5's main loop.
+    pub fn run(&mut self) {
+        loop {
+            let (events, exact) = (&self.events, &self.exact);
+            let Some(e) = self.queue.pop(|a, b| event_order(events, exact, a, b)) else { break };
+            let point = self.point(e);
+            if self.exact.cmp_coordinate(&point, &SweepPoint::input([self.stop_x, 0.0]), 0) == Ordering::Greater {
+                break;
+            }
+            self.current = point;
+            self.assign_vertex(e);
+            if self.event(e).left {
+                self.process_left(e);
+            } else {
+                self.process_right(e);
+            }
+        }
+    }
+
+    /// Events come in point order, so equal points are consecutive and share one output vertex.
+    fn assign_vertex(&mut self, e: EventId) {
+        let point = self.point(e);
+        let same = self.vertices.last().is_some_and(|last| self.exact.cmp_points(last, &point) == Ordering::Equal);
+        if !same {
+            self.vertices.push(point);
+        }
+        self.events[e as usize].vertex = (self.vertices.len() - 1) as u32;
+    }
+
+    /// The status order: is the new edge `e` below the edge `s` of S?
+    fn is_below(&self, e: EventId, s: EventId) -> bool {
+        let (new, old) = (self.event(e), self.event(s));
+        let side = match self.exact.orient(&old.line, &new.point) {
+            Ordering::Equal => self.exact.orient(&old.line, &self.other_point(e)),
+            side => side,
+        };
+        match side {
+            Ordering::Less => true,
+            Ordering::Greater => false,
+            Ordering::Equal => (new.operand, new.segment, e) < (old.operand, old.segment, s),
+        }
+    }
+
+    /// Does the edge of left event `e` pass through `p` strictly between its endpoints?
+    pub fn passes_through(&self, e: EventId, p: &SweepPoint) -> bool {
+        self.exact.orient(&self.event(e).line, p) == Ordering::Equal
+            && self.exact.cmp_points(&self.point(e), p) == Ordering::Less
+            && self.exact.cmp_points(p, &self.other_point(e)) == Ordering::Less
+    }
+
+    fn process_left(&mut self, e: EventId) {
+        // The order reads the events, not S, so S is taken out while it inserts.
+        let mut status = std::mem::take(&mut self.status);
+        let node = status.insert(e, |new, old| self.is_below(new, old));
+        self.status = status;
+        self.inserting = e;
+        self.events[e as usize].node = node;
+        let (below, above) = (self.below(node), self.above(node));
+        let p = self.current;
+        for neighbour in [below, above] {
+            if neighbour != NONE && self.passes_through(neighbour, &p) {
+                self.split(neighbour, p);
+                self.status.remove(node);
+                self.events[e as usize].node = NONE;
+                self.push(e);
+                self.inserting = NONE;
+                return;
+            }
+        }
+        self.selection.set_flags(&mut self.events, e, below);
+        if below != NONE {
+            self.possible_inter(below, e);
+        }
+        if above != NONE && self.event(e).node != NONE {
+            self.possible_inter(e, above);
+        }
+        self.inserting = NONE;
+    }
+
+    fn process_right(&mut self, r: EventId) {
+        let l = self.event(r).other;
+        let node = self.event(l).node;
+        if node == NONE {
+            return; // merged into an overlapping edge (§7.2)
+        }
+        let (below, above) = (self.below(node), self.above(node));
+        let edge = self.event(l).clone();
+        if edge.in_result {
+            self.events[l as usize].result_edge = self.result.len() as u32;
+            let (from, to) = (edge.vertex, self.event(r).vertex);
+            let forward = edge.result_above;
+            self.result.push(ResultEdge {
+                from: if forward { from } else { to },
+                to: if forward { to } else { from },
+                line: edge.line,
+                forward,
+                below: edge.result_below,
+            });
+        }
+        self.status.remove(node);
+        self.events[l as usize].node = NONE;
+        if below != NONE && above != NONE {
+            self.possible_inter(below, above);
+        }
+    }
+}
