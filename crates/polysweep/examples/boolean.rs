@@ -19,7 +19,9 @@ fn read(path: &str) -> Result<Value, String> {
     let bytes = std::fs::read(path).map_err(|e| format!("{path}: {e}"))?;
     let mut text = String::new();
     if path.ends_with(".gz") {
-        flate2::read::GzDecoder::new(&bytes[..]).read_to_string(&mut text).map_err(|e| format!("{path}: {e}"))?;
+        flate2::read::GzDecoder::new(&bytes[..])
+            .read_to_string(&mut text)
+            .map_err(|e| format!("{path}: {e}"))?;
     } else {
         text = String::from_utf8(bytes).map_err(|e| format!("{path}: {e}"))?;
     }
@@ -27,16 +29,25 @@ fn read(path: &str) -> Result<Value, String> {
 }
 
 fn coordinates(value: &Value, what: &str) -> Result<Vec<Vec<[f64; 2]>>, String> {
-    let rings = value.as_array().ok_or(format!("{what}: polygon coordinates must be an array of rings"))?;
+    let rings = value.as_array().ok_or(format!(
+        "{what}: polygon coordinates must be an array of rings"
+    ))?;
     rings
         .iter()
         .map(|ring| {
             ring.as_array()
                 .ok_or(format!("{what}: a ring must be an array of positions"))?
                 .iter()
-                .map(|p| match p.as_array().map(|a| (a.first().and_then(Value::as_f64), a.get(1).and_then(Value::as_f64))) {
-                    Some((Some(x), Some(y))) => Ok([x, y]),
-                    _ => Err(format!("{what}: a position must be [x, y] numbers")),
+                .map(|p| {
+                    match p.as_array().map(|a| {
+                        (
+                            a.first().and_then(Value::as_f64),
+                            a.get(1).and_then(Value::as_f64),
+                        )
+                    }) {
+                        Some((Some(x), Some(y))) => Ok([x, y]),
+                        _ => Err(format!("{what}: a position must be [x, y] numbers")),
+                    }
                 })
                 .collect()
         })
@@ -71,31 +82,41 @@ fn operand(path: &str) -> Result<MultiPolygon, String> {
 
 fn run(args: &[String]) -> Result<(), String> {
     let [op, a, b] = args else {
-        return Err("usage: boolean <intersection|union|difference|xor> a.geojson b.geojson".into());
+        return Err(
+            "usage: boolean <intersection|union|difference|xor> a.geojson b.geojson".into(),
+        );
     };
     let operation = match op.as_str() {
         "intersection" => Operation::Intersection,
         "union" => Operation::Union,
         "difference" => Operation::Difference,
         "xor" => Operation::Xor,
-        _ => return Err(format!("unknown operation {op:?}: expected intersection, union, difference or xor")),
+        _ => {
+            return Err(format!(
+                "unknown operation {op:?}: expected intersection, union, difference or xor"
+            ))
+        }
     };
     let (subject, clipping) = (operand(a)?, operand(b)?);
     let start = Instant::now();
-    let (result, stats) =
-        overlay_with_stats(operation, &subject, &clipping, &Options::default()).map_err(|e| e.to_string())?;
+    let (result, stats) = overlay_with_stats(operation, &subject, &clipping, &Options::default())
+        .map_err(|e| e.to_string())?;
     let elapsed = start.elapsed();
     eprintln!(
-        "{op}: {} + {} vertices in, {} out, {} polygons, {} crossings, area {:.6}, {:.2} ms",
+        "{op}: {} + {} vertices in, {} out, {} polygons, {} crossings, {} repair passes, area {:.6}, {:.2} ms",
         subject.vertex_count(),
         clipping.vertex_count(),
         result.vertex_count(),
         result.0.len(),
         stats.crossings,
+        stats.repair_passes,
         result.area(),
         elapsed.as_secs_f64() * 1e3
     );
-    println!("{}", json!({ "type": "MultiPolygon", "coordinates": result.to_coordinates() }));
+    println!(
+        "{}",
+        json!({ "type": "MultiPolygon", "coordinates": result.to_coordinates() })
+    );
     Ok(())
 }
 

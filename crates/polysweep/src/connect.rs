@@ -20,6 +20,7 @@ use crate::events::NONE;
 use crate::exact::{Exact, SweepPoint};
 use crate::geometry::{MultiPolygon, Point, Polygon, Ring};
 use crate::sweep::ResultEdge;
+use crate::validate::Side;
 use std::cmp::Ordering;
 
 /// Sign of the cross product of the travel directions of two result edges.
@@ -33,7 +34,12 @@ fn cross(exact: &Exact, e: &ResultEdge, f: &ResultEdge) -> Ordering {
 }
 
 /// Of the edges leaving a vertex, the first clockwise from the reverse of `incoming`.
-fn next_edge(exact: &Exact, edges: &[ResultEdge], incoming: usize, candidates: impl Iterator<Item = usize>) -> Option<usize> {
+fn next_edge(
+    exact: &Exact,
+    edges: &[ResultEdge],
+    incoming: usize,
+    candidates: impl Iterator<Item = usize>,
+) -> Option<usize> {
     let back = {
         let mut e = edges[incoming];
         e.forward = !e.forward;
@@ -47,7 +53,8 @@ fn next_edge(exact: &Exact, edges: &[ResultEdge], incoming: usize, candidates: i
     };
     candidates.min_by(|&a, &b| {
         let (ea, eb) = (&edges[a], &edges[b]);
-        half(ea).cmp(&half(eb)).then_with(|| cross(exact, ea, eb).reverse())
+        // Within a half, `a` first when `b` is clockwise from it.
+        half(ea).cmp(&half(eb)).then_with(|| cross(exact, ea, eb))
     })
 }
 
@@ -67,7 +74,8 @@ fn walk_rings(exact: &Exact, vertex_count: usize, edges: &[ResultEdge]) -> Vec<V
         outgoing[fill[e.from as usize]] = i;
         fill[e.from as usize] += 1;
     }
-    let mut used = vec![false; edges.len()];
+    // Edges that rounding shrank to a point are no part of any ring.
+    let mut used: Vec<bool> = edges.iter().map(|e| e.from == e.to).collect();
     let mut position_on_path = vec![NONE; vertex_count];
     let mut rings = Vec::new();
     for &start in &outgoing {
@@ -113,85 +121,206 @@ fn walk_rings(exact: &Exact, vertex_count: usize, edges: &[ResultEdge]) -> Vec<V
     rings
 }
 
-/// Builds the output polygons from the result edges of a sweep.
-pub(crate) fn connect(exact: &Exact, vertices: &[SweepPoint], edges: &mut [ResultEdge], below_edge: impl Fn(u32) -> u32) -> MultiPolygon {
+/// How far, in ulps of its coordinates, a rounded crossing point must be from every other vertex for rounding to
+/// be harmless: it moved by at most half an ulp, and so did its neighbours.
+const ROUNDING_CLEARANCE_ULPS: f64 = 4.0;
+
+/// The distance under which rounding could move points of magnitude `magnitude` across each other.
+pub(crate) fn clearance(magnitude: f64) -> f64 {
+    (f64::from_bits(magnitude.to_bits() + 1) - magnitude) * ROUNDING_CLEARANCE_ULPS
+}
+
+/// Could rounding have broken the output? Only where a rounded crossing point lands within a few ulps of another
+/// vertex of the result. An edge that passes that close to a crossing point crosses its edges there too, or ends
+/// there, so it has a vertex in the cluster as well; far from any cluster, rounding moves nothing across anything.
+pub(crate) fn rounding_may_matter(vertices: &[SweepPoint]) -> bool {
+    // Sweep order is x order, and rounding is monotone, so the neighbours in x are next to each other.
+    let ulp = |v: f64| clearance(v.abs());
+    (0..vertices.len())
+        .filter(|&i| !vertices[i].is_input())
+        .any(|i| {
+            let [x, y] = vertices[i].approx;
+            let (dx, dy) = (ulp(x), ulp(y));
+            let near = |j: &usize| {
+                let [u, v] = vertices[*j].approx;
+                (u - x).abs() <= dx && (v - y).abs() <= dy
+            };
+            let before = (0..i)
+                .rev()
+                .take_while(|&j| vertices[j].approx[0] >= x - dx);
+            let after = (i + 1..vertices.len()).take_while(|&j| vertices[j].approx[0] <= x + dx);
+            before.chain(after).any(|j| near(&j))
+        })
+}
+
+/// Output vertex of each sweep vertex: its coordinates rounded to f64, where distinct exact points that round to
+/// the same floats become one vertex.
+fn merge_rounded(vertices: &[SweepPoint]) -> (Vec<u32>, Vec<Point>) {
+    let mut ids = std::collections::HashMap::with_capacity(vertices.len());
+    let mut points = Vec::with_capacity(vertices.len());
+    let vertex_ids = vertices
+        .iter()
+        .map(|v| {
+            // `+ 0.0` turns -0 into 0, so that both are one key.
+            let [x, y] = v.approx.map(|c| c + 0.0);
+            *ids.entry((x.to_bits(), y.to_bits())).or_insert_with(|| {
+                points.push(Point::new(x, y));
+                (points.len() - 1) as u32
+            })
+        })
+        .collect();
+    (vertex_ids, points)
+}
+
+fn orient(a: Point, b: Point, c: Point) -> Ordering {
+    let p = |v: Point| robust::Coord { x: v.x, y: v.y };
+    robust::orient2d(p(a), p(b), p(c))
+        .partial_cmp(&0.0)
+        .unwrap_or(Ordering::Equal)
+}
+
+/// The polygon with the smallest exterior that contains `hole`, by exact point-in-ring tests of its vertices.
+fn innermost_shell_around(polygons: &[Polygon], hole: &[Point]) -> Option<usize> {
+    polygons
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| {
+            let side = hole
+                .iter()
+                .map(|&v| crate::validate::locate(&p.exterior, v))
+                .find(|s| *s != Side::Boundary);
+            side == Some(Side::Inside)
+        })
+        .min_by(|(_, p), (_, q)| {
+            crate::ring_area(&p.exterior).total_cmp(&crate::ring_area(&q.exterior))
+        })
+        .map(|(i, _)| i)
+}
+
+/// Builds the output polygons from the result edges of a sweep. `below_edge` maps a left event to its result
+/// edge.
+///
+/// Rounding is the one inexact step. A vertex moves by at most half an ulp; where several exact vertices round to
+/// one point they become one vertex (a pinch, cut by the walk), edges that shrink to nothing are dropped, and so
+/// are rings whose rounded area is zero.
+pub(crate) fn connect(
+    exact: &Exact,
+    vertices: &[SweepPoint],
+    edges: &mut [ResultEdge],
+    below_edge: impl Fn(u32) -> u32,
+) -> MultiPolygon {
+    let (vertex_ids, points) = merge_rounded(vertices);
     for e in edges.iter_mut() {
-        e.below = if e.below == NONE { NONE } else { below_edge(e.below) };
+        e.below = if e.below == NONE {
+            NONE
+        } else {
+            below_edge(e.below)
+        };
+        e.from = vertex_ids[e.from as usize];
+        e.to = vertex_ids[e.to as usize];
     }
-    let rings = walk_rings(exact, vertices.len(), edges);
+    let rings = walk_rings(exact, points.len(), edges);
     let mut ring_of_edge = vec![NONE; edges.len()];
     for (r, ring) in rings.iter().enumerate() {
         for &e in ring {
             ring_of_edge[e] = r as u32;
         }
     }
-    // The two edges of each ring at its first vertex in sweep order (the lowest vertex id): the incoming and the
-    // outgoing one. The ring is counter-clockwise when it turns left there.
+    // Each ring's edges into and out of its lowest-leftmost vertex, and its orientation there.
+    let lexicographic = |a: &Point, b: &Point| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y));
     let leftmost: Vec<(usize, usize)> = rings
         .iter()
         .map(|ring| {
-            let k = (0..ring.len()).min_by_key(|&k| edges[ring[k]].from).expect("rings are not empty");
+            let k = (0..ring.len())
+                .min_by(|&i, &j| {
+                    lexicographic(
+                        &points[edges[ring[i]].from as usize],
+                        &points[edges[ring[j]].from as usize],
+                    )
+                })
+                .expect("rings are not empty");
             (ring[(k + ring.len() - 1) % ring.len()], ring[k])
         })
         .collect();
-    let is_shell: Vec<bool> =
-        leftmost.iter().map(|&(i, o)| cross(exact, &edges[i], &edges[o]) == Ordering::Greater).collect();
+    // The orientation twice: of the rounded ring at its leftmost rounded vertex, and exactly at its first vertex
+    // in sweep order (vertex ids follow the sweep). A ring on which they disagree is one that rounding turned
+    // inside out: it is thinner than an ulp, and is dropped like one that rounding flattened.
+    let turn: Vec<Ordering> = rings
+        .iter()
+        .zip(&leftmost)
+        .map(|(ring, &(i, o))| {
+            let p = |v: u32| points[v as usize];
+            let rounded = orient(p(edges[i].from), p(edges[o].from), p(edges[o].to));
+            let k = (0..ring.len())
+                .min_by_key(|&k| edges[ring[k]].from)
+                .expect("rings are not empty");
+            let (into, out) = (
+                &edges[ring[(k + ring.len() - 1) % ring.len()]],
+                &edges[ring[k]],
+            );
+            if cross(exact, into, out) == rounded {
+                rounded
+            } else {
+                Ordering::Equal
+            }
+        })
+        .collect();
+    let is_shell = |r: u32| turn[r as usize] == Ordering::Greater;
+    // The ring of the result edge below ring `r`'s lowest edge at its leftmost vertex.
+    let ring_below = |r: u32| {
+        let (i, o) = leftmost[r as usize];
+        [edges[i].below, edges[o].below]
+            .into_iter()
+            .map(|b| {
+                if b == NONE {
+                    NONE
+                } else {
+                    ring_of_edge[b as usize]
+                }
+            })
+            .find(|&b| b != NONE && b != r)
+    };
+    let to_ring = |ring: &[usize]| -> Ring {
+        let mut out: Ring = ring
+            .iter()
+            .map(|&e| points[edges[e].from as usize])
+            .collect();
+        out.push(out[0]);
+        out
+    };
     let mut polygon_of_ring = vec![NONE; rings.len()];
     let mut polygons: Vec<Polygon> = Vec::new();
-    let to_ring = |ring: &[usize]| -> Ring {
-        let mut points: Ring = Vec::with_capacity(ring.len() + 1);
-        for &e in ring {
-            let [x, y] = vertices[edges[e].from as usize].approx;
-            // Distinct exact points can round to one float: never repeat a point.
-            if points.last() != Some(&Point::new(x, y)) {
-                points.push(Point::new(x, y));
-            }
-        }
-        while points.len() > 1 && points.first() == points.last() {
-            points.pop();
-        }
-        if let Some(&first) = points.first() {
-            points.push(first);
-        }
-        points
-    };
     for (r, ring) in rings.iter().enumerate() {
-        if is_shell[r] {
+        if is_shell(r as u32) && ring.len() >= 3 {
             polygon_of_ring[r] = polygons.len() as u32;
-            polygons.push(Polygon { exterior: to_ring(ring), holes: Vec::new() });
+            polygons.push(Polygon {
+                exterior: to_ring(ring),
+                holes: Vec::new(),
+            });
         }
     }
     for (r, ring) in rings.iter().enumerate() {
-        if is_shell[r] {
-            continue;
+        if turn[r] != Ordering::Less || ring.len() < 3 {
+            continue; // a shell, or a ring that rounding flattened
         }
-        // The hole's lower edge at its leftmost vertex has a result edge of another ring below it.
-        let (i, o) = leftmost[r];
-        let below = [edges[i].below, edges[o].below]
-            .into_iter()
-            .find(|&b| b != NONE && ring_of_edge[b as usize] != r as u32);
-        let mut owner = below.map(|b| ring_of_edge[b as usize]);
-        // Walk down through holes to the shell; at most one step per ring, so this always ends.
+        // Walk down through holes to a shell; at most one step per ring, so this always ends.
+        let mut owner = ring_below(r as u32);
         for _ in 0..rings.len() {
             match owner {
-                Some(o) if !is_shell[o as usize] => {
-                    let (i, out) = leftmost[o as usize];
-                    owner = [edges[i].below, edges[out].below]
-                        .into_iter()
-                        .find(|&b| b != NONE && ring_of_edge[b as usize] != o)
-                        .map(|b| ring_of_edge[b as usize]);
-                }
+                Some(o) if !is_shell(o) => owner = ring_below(o),
                 _ => break,
             }
         }
-        debug_assert!(owner.is_some_and(|o| is_shell[o as usize]), "a hole without a shell");
-        if let Some(shell) = owner.filter(|&o| is_shell[o as usize]) {
-            polygons[polygon_of_ring[shell as usize] as usize].holes.push(to_ring(ring));
+        let hole = to_ring(ring);
+        let polygon = match owner.filter(|&o| is_shell(o) && polygon_of_ring[o as usize] != NONE) {
+            Some(shell) => Some(polygon_of_ring[shell as usize] as usize),
+            // The edge below was one that rounding shrank to a point: find the shell by position instead.
+            None => innermost_shell_around(&polygons, &hole),
+        };
+        debug_assert!(polygon.is_some(), "a hole without a shell");
+        if let Some(p) = polygon {
+            polygons[p].holes.push(hole);
         }
-    }
-    polygons.retain(|p| p.exterior.len() >= 4);
-    for p in &mut polygons {
-        p.holes.retain(|h| h.len() >= 4);
     }
     MultiPolygon(polygons)
 }

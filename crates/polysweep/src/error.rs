@@ -15,7 +15,11 @@ pub struct Location {
 
 impl fmt::Display for Location {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "operand {}, polygon {}, ring {}, vertex {}", self.operand, self.polygon, self.ring, self.vertex)
+        write!(
+            f,
+            "operand {}, polygon {}, ring {}, vertex {}",
+            self.operand, self.polygon, self.ring, self.vertex
+        )
     }
 }
 

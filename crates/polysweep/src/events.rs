@@ -53,7 +53,14 @@ pub(crate) struct SweepEvent {
 }
 
 impl SweepEvent {
-    pub fn new(point: SweepPoint, left: bool, line: Line, operand: Operand, segment: u32, winding: i32) -> Self {
+    pub fn new(
+        point: SweepPoint,
+        left: bool,
+        line: Line,
+        operand: Operand,
+        segment: u32,
+        winding: i32,
+    ) -> Self {
         let mut w = [0; 2];
         w[operand] = winding;
         SweepEvent {
@@ -76,19 +83,34 @@ impl SweepEvent {
 
     /// A copy of this edge's identity (line, operand, winding) for a new event of one of its fragments.
     pub fn fragment(&self, point: SweepPoint, left: bool, other: EventId) -> Self {
-        SweepEvent { point, left, other, winding: self.winding, ..SweepEvent::new(point, left, self.line, self.operand, self.segment, 0) }
+        SweepEvent {
+            point,
+            left,
+            other,
+            winding: self.winding,
+            ..SweepEvent::new(point, left, self.line, self.operand, self.segment, 0)
+        }
     }
 }
 
 /// The order in which events are processed (§4 and §7.1): by point, left to right and bottom to top; at one point
 /// right endpoints before left ones; then the lower edge first; collinear edges by operand and input segment.
-pub(crate) fn event_order(events: &[SweepEvent], exact: &Exact, a: EventId, b: EventId) -> Ordering {
+pub(crate) fn event_order(
+    events: &[SweepEvent],
+    exact: &Exact,
+    a: EventId,
+    b: EventId,
+) -> Ordering {
     let (ea, eb) = (&events[a as usize], &events[b as usize]);
     exact
         .cmp_points(&ea.point, &eb.point)
         .then(ea.left.cmp(&eb.left))
         // `b`'s far endpoint above `a`'s line means `a` is the lower edge, so `a` goes first.
-        .then_with(|| exact.orient(&ea.line, &events[eb.other as usize].point).reverse())
+        .then_with(|| {
+            exact
+                .orient(&ea.line, &events[eb.other as usize].point)
+                .reverse()
+        })
         .then(ea.operand.cmp(&eb.operand))
         .then(ea.segment.cmp(&eb.segment))
         .then(a.cmp(&b))
@@ -105,7 +127,11 @@ pub(crate) struct EventQueue {
 impl EventQueue {
     pub fn new(mut initial: Vec<EventId>, order: impl Fn(EventId, EventId) -> Ordering) -> Self {
         initial.sort_unstable_by(|&a, &b| order(a, b));
-        EventQueue { initial, next_initial: 0, heap: Vec::new() }
+        EventQueue {
+            initial,
+            next_initial: 0,
+            heap: Vec::new(),
+        }
     }
 
     pub fn push(&mut self, event: EventId, order: impl Fn(EventId, EventId) -> Ordering) {
@@ -139,7 +165,9 @@ impl EventQueue {
             let (l, r) = (2 * parent + 1, 2 * parent + 2);
             let mut smallest = parent;
             for child in [l, r] {
-                if child < self.heap.len() && order(self.heap[child], self.heap[smallest]) == Ordering::Less {
+                if child < self.heap.len()
+                    && order(self.heap[child], self.heap[smallest]) == Ordering::Less
+                {
                     smallest = child;
                 }
             }

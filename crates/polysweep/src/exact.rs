@@ -42,10 +42,13 @@ pub(crate) struct SweepPoint {
 
 impl SweepPoint {
     pub fn input(p: [f64; 2]) -> Self {
-        SweepPoint { approx: p, crossing: INPUT }
+        SweepPoint {
+            approx: p,
+            crossing: INPUT,
+        }
     }
 
-    fn is_input(&self) -> bool {
+    pub fn is_input(&self) -> bool {
         self.crossing == INPUT
     }
 }
@@ -123,7 +126,8 @@ impl Exact {
 
     /// The sweep order of points: left to right, and bottom to top at equal x (§4, §7.1).
     pub fn cmp_points(&self, p: &SweepPoint, q: &SweepPoint) -> Ordering {
-        self.cmp_coordinate(p, q, 0).then_with(|| self.cmp_coordinate(p, q, 1))
+        self.cmp_coordinate(p, q, 0)
+            .then_with(|| self.cmp_coordinate(p, q, 1))
     }
 
     /// The side of `p` with respect to `line`: `Greater` if `p` is to the left of `a → b` (above a non-vertical
@@ -170,9 +174,15 @@ impl Exact {
         debug_assert!(!denominator.is_zero(), "crossing of parallel lines");
         let t = ((&a2x - &a1x) * &d2y - (&a2y - &a1y) * &d2x) / denominator;
         let exact = [a1x + &t * d1x, a1y + t * d1y];
-        let approx = [exact[0].to_f64().unwrap_or(f64::NAN), exact[1].to_f64().unwrap_or(f64::NAN)];
+        let approx = [
+            exact[0].to_f64().unwrap_or(f64::NAN),
+            exact[1].to_f64().unwrap_or(f64::NAN),
+        ];
         self.crossings.push(exact);
-        SweepPoint { approx, crossing: (self.crossings.len() - 1) as u32 }
+        SweepPoint {
+            approx,
+            crossing: (self.crossings.len() - 1) as u32,
+        }
     }
 
     /// How many crossing points were constructed.
@@ -189,31 +199,53 @@ mod tests {
     fn crossing_is_exact_and_predicates_see_it_on_both_lines() {
         let mut exact = Exact::default();
         // Lines whose crossing (1/3, 1/3) is not representable in binary floating point.
-        let l = Line { a: [0.0, 0.0], b: [1.0, 1.0] };
-        let m = Line { a: [0.0, 1.0], b: [0.5, 0.0] };
+        let l = Line {
+            a: [0.0, 0.0],
+            b: [1.0, 1.0],
+        };
+        let m = Line {
+            a: [0.0, 1.0],
+            b: [0.5, 0.0],
+        };
         let x = exact.crossing(&l, &m);
         assert_eq!(exact.orient(&l, &x), Ordering::Equal);
         assert_eq!(exact.orient(&m, &x), Ordering::Equal);
         let rounded = SweepPoint::input(x.approx);
-        assert_ne!(exact.cmp_points(&x, &rounded), Ordering::Equal, "1/3 is not a float");
+        assert_ne!(
+            exact.cmp_points(&x, &rounded),
+            Ordering::Equal,
+            "1/3 is not a float"
+        );
         assert_eq!(x.approx, [1.0 / 3.0, 1.0 / 3.0]);
     }
 
     #[test]
     fn orientation_of_nearly_collinear_points_is_exact() {
         let exact = Exact::default();
-        let line = Line { a: [0.5, 0.5], b: [12.0, 12.0] };
+        let line = Line {
+            a: [0.5, 0.5],
+            b: [12.0, 12.0],
+        };
         // 0.5 + 2^-53 rounds to 0.5 but 0.5 + 2^-52 does not: just above the diagonal.
         let p = SweepPoint::input([24.0, 24.0 + 24.0 * f64::EPSILON]);
         assert_eq!(exact.orient(&line, &p), Ordering::Greater);
-        assert_eq!(exact.orient(&line, &SweepPoint::input([24.0, 24.0])), Ordering::Equal);
+        assert_eq!(
+            exact.orient(&line, &SweepPoint::input([24.0, 24.0])),
+            Ordering::Equal
+        );
     }
 
     #[test]
     fn direction_cross_product() {
         let exact = Exact::default();
-        let east = Line { a: [0.0, 0.0], b: [1.0, 0.0] };
-        let north = Line { a: [5.0, 5.0], b: [5.0, 9.0] };
+        let east = Line {
+            a: [0.0, 0.0],
+            b: [1.0, 0.0],
+        };
+        let north = Line {
+            a: [5.0, 5.0],
+            b: [5.0, 9.0],
+        };
         assert_eq!(exact.cross_directions(&east, &north), Ordering::Greater);
         assert_eq!(exact.cross_directions(&north, &east), Ordering::Less);
         assert_eq!(exact.cross_directions(&east, &east), Ordering::Equal);

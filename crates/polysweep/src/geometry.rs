@@ -88,7 +88,12 @@ impl MultiPolygon {
     pub fn to_coordinates(&self) -> Vec<Vec<Vec<[f64; 2]>>> {
         self.0
             .iter()
-            .map(|polygon| polygon.rings().map(|r| r.iter().map(|&p| p.into()).collect()).collect())
+            .map(|polygon| {
+                polygon
+                    .rings()
+                    .map(|r| r.iter().map(|&p| p.into()).collect())
+                    .collect()
+            })
             .collect()
     }
 
@@ -103,7 +108,11 @@ impl MultiPolygon {
 
     /// Number of vertices, counting each ring's closing vertex once.
     pub fn vertex_count(&self) -> usize {
-        self.0.iter().flat_map(Polygon::rings).map(|r| open_len(r)).sum()
+        self.0
+            .iter()
+            .flat_map(Polygon::rings)
+            .map(|r| open_len(r))
+            .sum()
     }
 }
 
@@ -144,8 +153,12 @@ mod geo_interop {
 
     impl From<&geo_types::Polygon<f64>> for Polygon {
         fn from(p: &geo_types::Polygon<f64>) -> Self {
-            let ring = |l: &geo_types::LineString<f64>| l.0.iter().map(|c| Point::new(c.x, c.y)).collect();
-            Polygon { exterior: ring(p.exterior()), holes: p.interiors().iter().map(ring).collect() }
+            let ring =
+                |l: &geo_types::LineString<f64>| l.0.iter().map(|c| Point::new(c.x, c.y)).collect();
+            Polygon {
+                exterior: ring(p.exterior()),
+                holes: p.interiors().iter().map(ring).collect(),
+            }
         }
     }
 
@@ -157,9 +170,18 @@ mod geo_interop {
 
     impl From<&MultiPolygon> for geo_types::MultiPolygon<f64> {
         fn from(m: &MultiPolygon) -> Self {
-            let line = |r: &Ring| geo_types::LineString::from(r.iter().map(|p| (p.x, p.y)).collect::<Vec<_>>());
+            let line = |r: &Ring| {
+                geo_types::LineString::from(r.iter().map(|p| (p.x, p.y)).collect::<Vec<_>>())
+            };
             geo_types::MultiPolygon(
-                m.0.iter().map(|p| geo_types::Polygon::new(line(&p.exterior), p.holes.iter().map(line).collect())).collect(),
+                m.0.iter()
+                    .map(|p| {
+                        geo_types::Polygon::new(
+                            line(&p.exterior),
+                            p.holes.iter().map(line).collect(),
+                        )
+                    })
+                    .collect(),
             )
         }
     }

@@ -16,7 +16,12 @@ pub(crate) fn check(index: usize, operand: &MultiPolygon) -> Result<(), Error> {
     for (polygon, p) in operand.0.iter().enumerate() {
         for (ring, r) in p.rings().enumerate() {
             for (vertex, point) in r.iter().enumerate() {
-                let at = Location { operand: index, polygon, ring, vertex };
+                let at = Location {
+                    operand: index,
+                    polygon,
+                    ring,
+                    vertex,
+                };
                 for value in [point.x, point.y] {
                     if !value.is_finite() {
                         return Err(Error::NonFiniteCoordinate { at, value });
@@ -51,8 +56,10 @@ pub(crate) fn add_events(events: &mut Vec<SweepEvent>, polygons: &MultiPolygon, 
             let id = events.len() as u32;
             // Crossing an edge upwards enters a counter-clockwise ring when the edge runs left to right.
             let winding = if forward { 1 } else { -1 };
-            let mut left = SweepEvent::new(SweepPoint::input(a), true, line, operand, segment, winding);
-            let mut right = SweepEvent::new(SweepPoint::input(b), false, line, operand, segment, winding);
+            let mut left =
+                SweepEvent::new(SweepPoint::input(a), true, line, operand, segment, winding);
+            let mut right =
+                SweepEvent::new(SweepPoint::input(b), false, line, operand, segment, winding);
             left.other = id + 1;
             right.other = id;
             events.push(left);
@@ -63,5 +70,11 @@ pub(crate) fn add_events(events: &mut Vec<SweepEvent>, polygons: &MultiPolygon, 
 
 /// The largest x of an operand's vertices, or -∞ when it has none.
 pub(crate) fn max_x(polygons: &MultiPolygon) -> f64 {
-    polygons.0.iter().flat_map(|p| p.rings()).flatten().map(|p| p.x).fold(f64::NEG_INFINITY, f64::max)
+    polygons
+        .0
+        .iter()
+        .flat_map(|p| p.rings())
+        .flatten()
+        .map(|p| p.x)
+        .fold(f64::NEG_INFINITY, f64::max)
 }

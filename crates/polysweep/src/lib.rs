@@ -71,15 +71,18 @@ pub struct Options {
     pub fill_rule: FillRule,
 }
 
-/// What one sweep did, for display and benchmarks.
+/// What an operation did, for display and benchmarks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Stats {
-    /// Edges of both operands (after dropping zero-length ones).
+    /// Edges of all operands (after dropping zero-length ones).
     pub input_edges: usize,
     /// Points where two edges properly cross (constructed intersection points).
     pub crossings: usize,
     /// Events processed, including those made by subdivision.
     pub events: usize,
+    /// Extra sweeps over the rounded result because rounding put vertices within a few ulps of each other (see
+    /// the robustness page). Almost always 0.
+    pub repair_passes: usize,
 }
 
 /// Computes `operation` on `subject` and `clipping` (for [`Operation::Difference`], subject minus clipping).
@@ -101,32 +104,92 @@ pub fn overlay_with_stats(
 ) -> Result<(MultiPolygon, Stats), Error> {
     input::check(0, subject)?;
     input::check(1, clipping)?;
-    Ok(checked_overlay(operation, subject, clipping, options))
-}
-
-fn checked_overlay(operation: Operation, subject: &MultiPolygon, clipping: &MultiPolygon, options: &Options) -> (MultiPolygon, Stats) {
     let mut events = Vec::new();
     input::add_events(&mut events, subject, 0);
     input::add_events(&mut events, clipping, 1);
-    let input_edges = events.len() / 2;
-    // Past the last x where the result can have an edge, the sweep can stop (the end of the subject for a
-    // difference, of either operand for an intersection).
-    let stop_x = match operation {
-        Operation::Intersection => input::max_x(subject).min(input::max_x(clipping)),
-        Operation::Difference => input::max_x(subject),
+    let stop_x = stop_x(operation, subject, std::slice::from_ref(clipping));
+    Ok(sweep(
+        events,
+        Selection::Pair {
+            operation,
+            fill_rule: options.fill_rule,
+        },
+        stop_x,
+    ))
+}
+
+/// Past this x the result can have no edge, so the sweep stops there (the end of the subject for a difference,
+/// of the operand that ends first for an intersection).
+fn stop_x(operation: Operation, first: &MultiPolygon, others: &[MultiPolygon]) -> f64 {
+    match operation {
+        Operation::Intersection => others
+            .iter()
+            .map(input::max_x)
+            .fold(input::max_x(first), f64::min),
+        Operation::Difference => input::max_x(first),
         Operation::Union | Operation::Xor => f64::INFINITY,
-    };
-    let mut sweep = sweep::Sweep::new(events, Selection { operation, fill_rule: options.fill_rule }, stop_x);
-    sweep.run();
-    let stats = Stats { input_edges, crossings: sweep.exact.crossing_count(), events: sweep.events.len() };
-    let events = &sweep.events;
-    let result = connect::connect(&sweep.exact, &sweep.vertices, &mut sweep.result, |e| events[e as usize].result_edge);
+    }
+}
+
+/// Repair passes allowed after one operation. Each pass sweeps the rounded result, whose vertices are then exact
+/// inputs: a pass that constructs no new crossing point ends the repair. One pass has sufficed in every case seen;
+/// the bound only guarantees that the function returns.
+const MAX_REPAIR_PASSES: usize = 4;
+
+/// The sweep of Fig. 5 over `events`, then the result rounded to f64 and, where rounding may have broken it,
+/// repaired by sweeping it again (see the robustness page).
+fn sweep(
+    events: Vec<events::SweepEvent>,
+    selection: Selection,
+    stop_x: f64,
+) -> (MultiPolygon, Stats) {
+    let input_edges = events.len() / 2;
+    let (mut result, mut stats, mut suspect) = sweep_once(events, selection, stop_x);
+    stats.input_edges = input_edges;
+    while suspect && stats.repair_passes < MAX_REPAIR_PASSES {
+        let mut events = Vec::new();
+        input::add_events(&mut events, &result, 0);
+        let repair = Selection::Count {
+            operation: Operation::Union,
+            operands: 1,
+        };
+        (result, _, suspect) = sweep_once(events, repair, f64::INFINITY);
+        stats.repair_passes += 1;
+    }
     (result, stats)
 }
 
+fn sweep_once(
+    events: Vec<events::SweepEvent>,
+    selection: Selection,
+    stop_x: f64,
+) -> (MultiPolygon, Stats, bool) {
+    let mut sweep = sweep::Sweep::new(events, selection, stop_x);
+    sweep.run();
+    let stats = Stats {
+        crossings: sweep.exact.crossing_count(),
+        events: sweep.events.len(),
+        ..Stats::default()
+    };
+    let suspect = sweep.close_call || connect::rounding_may_matter(&sweep.vertices);
+    let events = &sweep.events;
+    let result = connect::connect(&sweep.exact, &sweep.vertices, &mut sweep.result, |e| {
+        events[e as usize].result_edge
+    });
+    (result, stats, suspect)
+}
+
 /// `subject ∩ clipping` under the even-odd rule.
-pub fn intersection(subject: &MultiPolygon, clipping: &MultiPolygon) -> Result<MultiPolygon, Error> {
-    overlay(Operation::Intersection, subject, clipping, &Options::default())
+pub fn intersection(
+    subject: &MultiPolygon,
+    clipping: &MultiPolygon,
+) -> Result<MultiPolygon, Error> {
+    overlay(
+        Operation::Intersection,
+        subject,
+        clipping,
+        &Options::default(),
+    )
 }
 
 /// `subject ∪ clipping` under the even-odd rule.
@@ -136,7 +199,12 @@ pub fn union(subject: &MultiPolygon, clipping: &MultiPolygon) -> Result<MultiPol
 
 /// `subject − clipping` under the even-odd rule.
 pub fn difference(subject: &MultiPolygon, clipping: &MultiPolygon) -> Result<MultiPolygon, Error> {
-    overlay(Operation::Difference, subject, clipping, &Options::default())
+    overlay(
+        Operation::Difference,
+        subject,
+        clipping,
+        &Options::default(),
+    )
 }
 
 /// `subject ⊕ clipping` (symmetric difference) under the even-odd rule.
@@ -147,9 +215,9 @@ pub fn xor(subject: &MultiPolygon, clipping: &MultiPolygon) -> Result<MultiPolyg
 /// `operation` over many operands: the union, intersection or xor of all, or for [`Operation::Difference`] the
 /// first minus all the others. Errors name the operand by its index in `operands`.
 ///
-/// The paper's flags describe two operands, so one sweep takes two: the operands are combined pairwise in a
-/// balanced tree (log₂ m rounds of sweeps), each intermediate result already a valid polygon set. Under the
-/// non-zero rule only the first round uses it: intermediate results are valid and mean the same under both.
+/// The paper's flags describe two operands; here each operand is first made a valid polygon set by its own
+/// sweep (applying its fill rule), and then all go through one sweep that counts, for every region, how many
+/// operands contain it.
 ///
 /// ```
 /// use polysweep::{overlay_all, MultiPolygon, Operation, Options};
@@ -159,42 +227,39 @@ pub fn xor(subject: &MultiPolygon, clipping: &MultiPolygon) -> Result<MultiPolyg
 /// assert_eq!(row.area(), 3.0);
 /// # Ok::<(), polysweep::Error>(())
 /// ```
-pub fn overlay_all(operation: Operation, operands: &[MultiPolygon], options: &Options) -> Result<MultiPolygon, Error> {
+pub fn overlay_all(
+    operation: Operation,
+    operands: &[MultiPolygon],
+    options: &Options,
+) -> Result<MultiPolygon, Error> {
     for (index, operand) in operands.iter().enumerate() {
         input::check(index, operand)?;
     }
-    let Some((first, rest)) = operands.split_first() else { return Ok(MultiPolygon::default()) };
-    if operation == Operation::Difference {
-        let clipping = reduce(Operation::Union, rest, options);
-        return Ok(checked_overlay(Operation::Difference, first, &clipping, options).0);
+    let Some((first, rest)) = operands.split_first() else {
+        return Ok(MultiPolygon::default());
+    };
+    let normalise = Selection::Pair {
+        operation: Operation::Union,
+        fill_rule: options.fill_rule,
+    };
+    let mut events = Vec::new();
+    for (index, operand) in operands.iter().enumerate() {
+        let mut own = Vec::new();
+        input::add_events(&mut own, operand, 0);
+        let (valid, _) = sweep(own, normalise, f64::INFINITY);
+        let slot = usize::from(operation == Operation::Difference && index > 0);
+        input::add_events(&mut events, &valid, slot);
     }
-    Ok(reduce(operation, operands, options))
-}
-
-/// Combines checked operands pairwise, halving their number each round. Even a single operand goes through one
-/// sweep, so that the result always meets the output contract.
-fn reduce(operation: Operation, operands: &[MultiPolygon], options: &Options) -> MultiPolygon {
-    let empty = MultiPolygon::default();
-    let mut layer: Vec<MultiPolygon> = operands
-        .chunks(2)
-        .map(|pair| match pair {
-            [a, b] => checked_overlay(operation, a, b, options).0,
-            // A lone operand is normalised by a union with nothing (intersecting it with nothing would empty it).
-            [a] => checked_overlay(Operation::Union, a, &empty, options).0,
-            _ => unreachable!("chunks of two"),
-        })
-        .collect();
-    let normalised = Options { fill_rule: FillRule::EvenOdd };
-    while layer.len() > 1 {
-        let mut pairs = std::mem::take(&mut layer).into_iter();
-        while let Some(a) = pairs.next() {
-            layer.push(match pairs.next() {
-                Some(b) => checked_overlay(operation, &a, &b, &normalised).0,
-                None => a,
-            });
-        }
-    }
-    layer.pop().unwrap_or_default()
+    let in_slot_0 = if operation == Operation::Difference {
+        1
+    } else {
+        operands.len() as i32
+    };
+    let selection = Selection::Count {
+        operation,
+        operands: in_slot_0,
+    };
+    Ok(sweep(events, selection, stop_x(operation, first, rest)).0)
 }
 
 /// The union of all operands.
@@ -213,7 +278,12 @@ pub fn xor_all(operands: &[MultiPolygon]) -> Result<MultiPolygon, Error> {
 }
 
 /// `subject` minus every one of `clips`. Errors name `subject` as operand 0 and `clips[i]` as operand `i + 1`.
-pub fn difference_all(subject: &MultiPolygon, clips: &[MultiPolygon]) -> Result<MultiPolygon, Error> {
-    let operands: Vec<MultiPolygon> = std::iter::once(subject.clone()).chain(clips.iter().cloned()).collect();
+pub fn difference_all(
+    subject: &MultiPolygon,
+    clips: &[MultiPolygon],
+) -> Result<MultiPolygon, Error> {
+    let operands: Vec<MultiPolygon> = std::iter::once(subject.clone())
+        .chain(clips.iter().cloned())
+        .collect();
     overlay_all(Operation::Difference, &operands, &Options::default())
 }

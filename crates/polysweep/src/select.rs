@@ -62,16 +62,40 @@ impl Operation {
     }
 }
 
-/// The operation and fill rule of one run.
+/// Which regions one sweep keeps.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Selection {
-    pub operation: Operation,
-    pub fill_rule: FillRule,
+pub(crate) enum Selection {
+    /// The paper's case: two operands, each under its fill rule.
+    Pair {
+        operation: Operation,
+        fill_rule: FillRule,
+    },
+    /// Many operands, each a valid polygon set (winding 1 inside, 0 outside), counted together: slot 0 counts the
+    /// operands containing a region (for a difference: the subject), slot 1 the clipping operands of a
+    /// difference. `operands` is how many there are in slot 0.
+    Count { operation: Operation, operands: i32 },
 }
 
 impl Selection {
     pub fn in_result(&self, coverage: [i32; 2]) -> bool {
-        self.operation.keeps(self.fill_rule.is_inside(coverage[0]), self.fill_rule.is_inside(coverage[1]))
+        match *self {
+            Selection::Pair {
+                operation,
+                fill_rule,
+            } => operation.keeps(
+                fill_rule.is_inside(coverage[0]),
+                fill_rule.is_inside(coverage[1]),
+            ),
+            Selection::Count {
+                operation,
+                operands,
+            } => match operation {
+                Operation::Union => coverage[0] > 0,
+                Operation::Intersection => coverage[0] >= operands,
+                Operation::Xor => coverage[0] % 2 != 0,
+                Operation::Difference => coverage[0] > 0 && coverage[1] <= 0,
+            },
+        }
     }
 
     /// Fig. 9 generalised: sets the coverage and result flags of the left event `edge`, given the edge `below` it
@@ -83,8 +107,15 @@ impl Selection {
             Some(b) => (b.coverage_above, b.result_below),
         };
         let e = &mut events[edge as usize];
-        let crossed = [coverage_below[0] + e.winding[0], coverage_below[1] + e.winding[1]];
-        e.coverage_above = if e.line.is_vertical() { coverage_below } else { crossed };
+        let crossed = [
+            coverage_below[0] + e.winding[0],
+            coverage_below[1] + e.winding[1],
+        ];
+        e.coverage_above = if e.line.is_vertical() {
+            coverage_below
+        } else {
+            crossed
+        };
         e.result_above = self.in_result(crossed);
         e.in_result = self.in_result(coverage_below) != e.result_above;
         e.result_below = result_below;
@@ -99,7 +130,10 @@ mod tests {
     /// Fig. 10: which of two overlapping edges' fragments each operation keeps. An overlapping pair is one merged
     /// edge; `below` is the coverage under it.
     fn keeps_overlap(operation: Operation, below: [i32; 2], winding: [i32; 2]) -> bool {
-        let s = Selection { operation, fill_rule: FillRule::EvenOdd };
+        let s = Selection::Pair {
+            operation,
+            fill_rule: FillRule::EvenOdd,
+        };
         s.in_result(below) != s.in_result([below[0] + winding[0], below[1] + winding[1]])
     }
 
@@ -109,21 +143,49 @@ mod tests {
         let same = ([0, 0], [1, 1]);
         // DIFFERENT_TRANSITION: subject above, clipping below.
         let different = ([0, 1], [1, -1]);
-        for (operation, keep_same, keep_different) in
-            [(Intersection, true, false), (Union, true, false), (Difference, false, true), (Xor, false, false)]
-        {
-            assert_eq!(keeps_overlap(operation, same.0, same.1), keep_same, "{operation:?} same transition");
-            assert_eq!(keeps_overlap(operation, different.0, different.1), keep_different, "{operation:?} different");
+        for (operation, keep_same, keep_different) in [
+            (Intersection, true, false),
+            (Union, true, false),
+            (Difference, false, true),
+            (Xor, false, false),
+        ] {
+            assert_eq!(
+                keeps_overlap(operation, same.0, same.1),
+                keep_same,
+                "{operation:?} same transition"
+            );
+            assert_eq!(
+                keeps_overlap(operation, different.0, different.1),
+                keep_different,
+                "{operation:?} different"
+            );
         }
     }
 
     #[test]
     fn figure_9_flags_are_the_parities_of_the_counts() {
         // An edge of the clipping polygon above a subject edge, both bounding regions from below.
-        let s = Selection { operation: Intersection, fill_rule: FillRule::EvenOdd };
+        let s = Selection::Pair {
+            operation: Intersection,
+            fill_rule: FillRule::EvenOdd,
+        };
         let mut events = vec![
-            SweepEvent::new(crate::exact::SweepPoint::input([0.0, 0.0]), true, line(), 0, 0, 1),
-            SweepEvent::new(crate::exact::SweepPoint::input([0.0, 1.0]), true, line(), 1, 1, 1),
+            SweepEvent::new(
+                crate::exact::SweepPoint::input([0.0, 0.0]),
+                true,
+                line(),
+                0,
+                0,
+                1,
+            ),
+            SweepEvent::new(
+                crate::exact::SweepPoint::input([0.0, 1.0]),
+                true,
+                line(),
+                1,
+                1,
+                1,
+            ),
         ];
         s.set_flags(&mut events, 0, NONE);
         s.set_flags(&mut events, 1, 0);
@@ -131,18 +193,42 @@ mod tests {
         assert!(!events[0].in_result);
         // Second edge: inside the subject (its `inside` flag is !ple.inOut = true), so it bounds the intersection.
         assert!(events[1].in_result && events[1].result_above);
-        assert_eq!(events[1].result_below, NONE, "the edge below is not in the result");
+        assert_eq!(
+            events[1].result_below, NONE,
+            "the edge below is not in the result"
+        );
+    }
+
+    #[test]
+    fn counted_operands() {
+        let three = |operation| Selection::Count {
+            operation,
+            operands: 3,
+        };
+        assert!(three(Union).in_result([1, 0]) && !three(Union).in_result([0, 0]));
+        assert!(three(Intersection).in_result([3, 0]) && !three(Intersection).in_result([2, 0]));
+        assert!(three(Xor).in_result([3, 0]) && !three(Xor).in_result([2, 0]));
+        assert!(three(Difference).in_result([1, 0]) && !three(Difference).in_result([1, 2]));
     }
 
     #[test]
     fn non_zero_fills_doubly_wound_regions() {
-        let s = Selection { operation: Union, fill_rule: FillRule::NonZero };
+        let s = Selection::Pair {
+            operation: Union,
+            fill_rule: FillRule::NonZero,
+        };
         assert!(s.in_result([2, 0]));
-        let e = Selection { operation: Union, fill_rule: FillRule::EvenOdd };
+        let e = Selection::Pair {
+            operation: Union,
+            fill_rule: FillRule::EvenOdd,
+        };
         assert!(!e.in_result([2, 0]));
     }
 
     fn line() -> crate::exact::Line {
-        crate::exact::Line { a: [0.0, 0.0], b: [1.0, 0.0] }
+        crate::exact::Line {
+            a: [0.0, 0.0],
+            b: [1.0, 0.0],
+        }
     }
 }

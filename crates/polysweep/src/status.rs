@@ -27,7 +27,12 @@ pub(crate) struct Status {
 
 impl Default for Status {
     fn default() -> Self {
-        Status { nodes: Vec::new(), free: Vec::new(), root: NONE, random: 0x9E37_79B9 }
+        Status {
+            nodes: Vec::new(),
+            free: Vec::new(),
+            root: NONE,
+            random: 0x9E37_79B9,
+        }
     }
 }
 
@@ -42,7 +47,12 @@ impl Status {
         self.random ^= self.random << 13;
         self.random ^= self.random >> 17;
         self.random ^= self.random << 5;
-        let node = Node { event, parent: NONE, children: [NONE; 2], priority: self.random };
+        let node = Node {
+            event,
+            parent: NONE,
+            children: [NONE; 2],
+            priority: self.random,
+        };
         let id = match self.free.pop() {
             Some(id) => {
                 self.nodes[id as usize] = node;
@@ -59,7 +69,11 @@ impl Status {
         }
         let mut current = self.root;
         loop {
-            let side = if below(event, self.nodes[current as usize].event) { 0 } else { 1 };
+            let side = if below(event, self.nodes[current as usize].event) {
+                0
+            } else {
+                1
+            };
             let child = self.nodes[current as usize].children[side];
             if child == NONE {
                 self.nodes[current as usize].children[side] = id;
@@ -141,7 +155,11 @@ impl Status {
     fn rotate_up(&mut self, node: u32) {
         let parent = self.nodes[node as usize].parent;
         let grandparent = self.nodes[parent as usize].parent;
-        let side = if self.nodes[parent as usize].children[0] == node { 0 } else { 1 };
+        let side = if self.nodes[parent as usize].children[0] == node {
+            0
+        } else {
+            1
+        };
         let inner = self.nodes[node as usize].children[1 - side];
         self.nodes[parent as usize].children[side] = inner;
         if inner != NONE {
@@ -193,7 +211,14 @@ mod tests {
         for &(v, node) in nodes.iter().filter(|(v, _)| v % 3 != 0) {
             let i = expected.iter().position(|&x| x == v).unwrap();
             let prev = status.prev(node);
-            assert_eq!(if prev == NONE { None } else { Some(status.event(prev)) }, i.checked_sub(1).map(|j| expected[j]));
+            assert_eq!(
+                if prev == NONE {
+                    None
+                } else {
+                    Some(status.event(prev))
+                },
+                i.checked_sub(1).map(|j| expected[j])
+            );
         }
     }
 }

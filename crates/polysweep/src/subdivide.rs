@@ -59,7 +59,8 @@ impl Sweep {
     }
 
     fn strictly_inside(&self, edge: EventId, p: &SweepPoint) -> bool {
-        self.exact.cmp_points(&self.point(edge), p) == Less && self.exact.cmp_points(p, &self.other_point(edge)) == Less
+        self.exact.cmp_points(&self.point(edge), p) == Less
+            && self.exact.cmp_points(p, &self.other_point(edge)) == Less
     }
 
     /// §7.2: two collinear edges. Splits each at the other's endpoints that lie inside it, then merges the
@@ -83,7 +84,11 @@ impl Sweep {
         if self.exact.cmp_points(&a1, &a2) == Equal {
             // Both now run from the common left point to the nearer right point: one edge from now on.
             // The edge being inserted is the one that leaves: edges above the other may already refer to it.
-            let (keep, merged) = if lower == self.inserting { (upper, lower) } else { (lower, upper) };
+            let (keep, merged) = if lower == self.inserting {
+                (upper, lower)
+            } else {
+                (lower, upper)
+            };
             self.merge(keep, merged);
         }
     }
@@ -91,7 +96,10 @@ impl Sweep {
     /// Fig. 6: splits the edge of left event `edge` at `p`, which lies on it strictly between its endpoints.
     pub(crate) fn split(&mut self, edge: EventId, p: SweepPoint) {
         let right = self.event(edge).other;
-        let (new_right, new_left) = (self.events.len() as EventId, self.events.len() as EventId + 1);
+        let (new_right, new_left) = (
+            self.events.len() as EventId,
+            self.events.len() as EventId + 1,
+        );
         let base = self.event(edge).clone();
         self.events.push(base.fragment(p, false, edge));
         self.events.push(base.fragment(p, true, right));

@@ -52,6 +52,9 @@ pub(crate) struct Sweep {
     pub stop_x: f64,
     /// The left event being inserted, or `NONE`.
     pub inserting: EventId,
+    /// Some event point passed within a few ulps of a neighbouring edge: rounding the output could move one across
+    /// the other (see `note_close_calls`).
+    pub close_call: bool,
 }
 
 impl Sweep {
@@ -70,6 +73,7 @@ impl Sweep {
             result: Vec::new(),
             stop_x,
             inserting: NONE,
+            close_call: false,
         }
     }
 
@@ -109,9 +113,15 @@ impl Sweep {
     pub fn run(&mut self) {
         loop {
             let (events, exact) = (&self.events, &self.exact);
-            let Some(e) = self.queue.pop(|a, b| event_order(events, exact, a, b)) else { break };
+            let Some(e) = self.queue.pop(|a, b| event_order(events, exact, a, b)) else {
+                break;
+            };
             let point = self.point(e);
-            if self.exact.cmp_coordinate(&point, &SweepPoint::input([self.stop_x, 0.0]), 0) == Ordering::Greater {
+            if self
+                .exact
+                .cmp_coordinate(&point, &SweepPoint::input([self.stop_x, 0.0]), 0)
+                == Ordering::Greater
+            {
                 break;
             }
             self.current = point;
@@ -127,7 +137,10 @@ impl Sweep {
     /// Events come in point order, so equal points are consecutive and share one output vertex.
     fn assign_vertex(&mut self, e: EventId) {
         let point = self.point(e);
-        let same = self.vertices.last().is_some_and(|last| self.exact.cmp_points(last, &point) == Ordering::Equal);
+        let same = self
+            .vertices
+            .last()
+            .is_some_and(|last| self.exact.cmp_points(last, &point) == Ordering::Equal);
         if !same {
             self.vertices.push(point);
         }
@@ -155,6 +168,32 @@ impl Sweep {
             && self.exact.cmp_points(p, &self.other_point(e)) == Ordering::Less
     }
 
+    /// Rounding moves a constructed point by at most half an ulp, and an edge with such an end (even one made by a
+    /// later split) by as much. So an event point can end up on the other side of a neighbouring edge only if it
+    /// lies within a few ulps of it; `close_call` notes it, and the result is then swept again.
+    fn note_close_calls(&mut self, p: &SweepPoint, neighbours: [EventId; 2]) {
+        for e in neighbours.into_iter().filter(|&e| e != NONE) {
+            let (a, b) = (self.point(e), self.other_point(e));
+            if [a, b]
+                .iter()
+                .any(|q| self.exact.cmp_points(q, p) == Ordering::Equal)
+            {
+                continue; // `p` is a vertex of the edge and moves with it
+            }
+            let line = self.event(e).line;
+            let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
+            let distance = ((p.approx[0] - line.a[0]) * dy - (p.approx[1] - line.a[1]) * dx).abs()
+                / dx.hypot(dy);
+            let magnitude = [a.approx, b.approx, p.approx]
+                .iter()
+                .flatten()
+                .fold(0.0f64, |m, v| m.max(v.abs()));
+            if distance <= crate::connect::clearance(magnitude) {
+                self.close_call = true;
+            }
+        }
+    }
+
     fn process_left(&mut self, e: EventId) {
         // The order reads the events, not S, so S is taken out while it inserts.
         let mut status = std::mem::take(&mut self.status);
@@ -174,6 +213,7 @@ impl Sweep {
                 return;
             }
         }
+        self.note_close_calls(&p, [below, above]);
         self.selection.set_flags(&mut self.events, e, below);
         if below != NONE {
             self.possible_inter(below, e);
@@ -191,6 +231,7 @@ impl Sweep {
             return; // merged into an overlapping edge (§7.2)
         }
         let (below, above) = (self.below(node), self.above(node));
+        self.note_close_calls(&self.current.clone(), [below, above]);
         let edge = self.event(l).clone();
         if edge.in_result {
             self.events[l as usize].result_edge = self.result.len() as u32;

@@ -1,0 +1,242 @@
+//! Property tests against oracles that do not use the sweep: even-odd (or winding) membership by ray casting on
+//! the input rings, area identities with shoelace areas of simple inputs, the output validator, and invariance
+//! under rotation by 90°, swapped operands and reversed rings.
+
+mod common;
+
+use common::*;
+use polysweep::{
+    overlay, overlay_all, validate, FillRule, MultiPolygon, Operation, Options, Point, Polygon,
+};
+use proptest::prelude::*;
+
+const OPS: [Operation; 4] = [
+    Operation::Intersection,
+    Operation::Union,
+    Operation::Difference,
+    Operation::Xor,
+];
+
+fn ring(points: Vec<(i32, i32)>, scale: f64, offset: f64) -> Vec<Point> {
+    points
+        .into_iter()
+        .map(|(x, y)| Point::new(x as f64 * scale + offset, y as f64 * scale + offset))
+        .collect()
+}
+
+/// 1 to 3 rings of 3 to 8 vertices on a small integer grid: crossing, touching, overlapping, degenerate.
+fn grid_operand(size: i32) -> impl Strategy<Value = Vec<Vec<(i32, i32)>>> {
+    prop::collection::vec(prop::collection::vec((0..=size, 0..=size), 3..=8), 1..=3)
+}
+
+fn operand(rings: Vec<Vec<(i32, i32)>>, scale: f64, offset: f64) -> MultiPolygon {
+    MultiPolygon(
+        rings
+            .into_iter()
+            .map(|r| Polygon::new(ring(r, scale, offset), vec![]))
+            .collect(),
+    )
+}
+
+/// Sample points off every line through two grid points: the offsets were searched so that each sample is at
+/// least 0.002 grid units from any line whose direction has integer components up to 13 (the grids here are
+/// smaller). Rounded result vertices move edges by about 1e-16, so membership cannot flip.
+fn samples(size: i32, scale: f64, offset: f64) -> Vec<Point> {
+    let mut out = Vec::new();
+    for i in -1..=size {
+        for j in -1..=size {
+            let p = (
+                i as f64 + 0.936_717_557_608_381_4,
+                j as f64 + 0.997_394_915_318_301_7,
+            );
+            out.push(Point::new(p.0 * scale + offset, p.1 * scale + offset));
+        }
+    }
+    out
+}
+
+fn inside(m: &MultiPolygon, p: Point, fill_rule: FillRule) -> bool {
+    match fill_rule {
+        FillRule::EvenOdd => inside_even_odd(m, p),
+        FillRule::NonZero => winding_number(m, p) != 0,
+    }
+}
+
+fn keeps(op: Operation, a: bool, b: bool) -> bool {
+    match op {
+        Operation::Intersection => a && b,
+        Operation::Union => a || b,
+        Operation::Difference => a && !b,
+        Operation::Xor => a != b,
+    }
+}
+
+/// Every operation's result is valid and holds exactly the sample points the oracle says it should.
+fn check_membership(
+    a: &MultiPolygon,
+    b: &MultiPolygon,
+    points: &[Point],
+    fill_rule: FillRule,
+) -> Result<(), TestCaseError> {
+    let options = Options { fill_rule };
+    for op in OPS {
+        let result = overlay(op, a, b, &options).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        if let Err(e) = validate(&result) {
+            return Err(TestCaseError::fail(format!(
+                "{op:?}: invalid output: {e}\n{:?}",
+                result.to_coordinates()
+            )));
+        }
+        for &p in points {
+            if on_boundary(a, p) || on_boundary(b, p) {
+                continue;
+            }
+            let want = keeps(op, inside(a, p, fill_rule), inside(b, p, fill_rule));
+            prop_assert_eq!(
+                inside_even_odd(&result, p),
+                want,
+                "{:?} at {:?}: {:?}",
+                op,
+                p,
+                result.to_coordinates()
+            );
+        }
+    }
+    Ok(())
+}
+
+/// A simple star-shaped polygon: grid points sorted by angle around a centre off the grid.
+fn star(points: Vec<(i32, i32)>, centre: (f64, f64)) -> Option<Vec<Point>> {
+    let mut pts: Vec<Point> = points
+        .into_iter()
+        .map(|(x, y)| Point::new(x as f64, y as f64))
+        .collect();
+    pts.sort_by(|a, b| {
+        (a.y - centre.1)
+            .atan2(a.x - centre.0)
+            .total_cmp(&(b.y - centre.1).atan2(b.x - centre.0))
+    });
+    pts.dedup();
+    let closed: Vec<Point> = pts.iter().chain(pts.first()).copied().collect();
+    let polygon = MultiPolygon(vec![Polygon::new(closed.clone(), vec![])]);
+    (pts.len() >= 3 && validate(&polygon).is_ok()).then_some(closed)
+}
+
+fn shoelace(m: &MultiPolygon) -> f64 {
+    m.0.iter()
+        .map(|p| {
+            polysweep::ring_area(&p.exterior).abs()
+                - p.holes
+                    .iter()
+                    .map(|h| polysweep::ring_area(h).abs())
+                    .sum::<f64>()
+        })
+        .sum()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    #[test]
+    fn membership_on_a_small_grid(a in grid_operand(6), b in grid_operand(6)) {
+        let (a, b) = (operand(a, 1.0, 0.0), operand(b, 1.0, 0.0));
+        check_membership(&a, &b, &samples(6, 1.0, 0.0), FillRule::EvenOdd)?;
+    }
+
+    #[test]
+    fn membership_under_the_non_zero_rule(a in grid_operand(5), b in grid_operand(5)) {
+        let (a, b) = (operand(a, 1.0, 0.0), operand(b, 1.0, 0.0));
+        check_membership(&a, &b, &samples(5, 1.0, 0.0), FillRule::NonZero)?;
+    }
+
+    #[test]
+    fn membership_with_coordinates_near_1e_minus_9(a in grid_operand(8), b in grid_operand(8)) {
+        let (a, b) = (operand(a, 1e-9, 0.0), operand(b, 1e-9, 0.0));
+        check_membership(&a, &b, &samples(8, 1e-9, 0.0), FillRule::EvenOdd)?;
+    }
+
+    #[test]
+    fn membership_with_coordinates_near_1e9(a in grid_operand(8), b in grid_operand(8)) {
+        let (a, b) = (operand(a, 1.0, 1e9), operand(b, 1.0, 1e9));
+        check_membership(&a, &b, &samples(8, 1.0, 1e9), FillRule::EvenOdd)?;
+    }
+
+    #[test]
+    fn membership_with_near_parallel_edges_and_slivers(
+        ys in prop::collection::vec(0i32..4, 6),
+        tilt in 1i32..4,
+        shift in -3i32..=3,
+    ) {
+        // Long thin triangles whose long edges differ in slope by about 2^-40.
+        let sliver = |y0: f64, dy: f64| {
+            let d = dy * (tilt as f64) * (2f64).powi(-40);
+            vec![Point::new(0.0, y0), Point::new(1000.0, y0 + 1.0), Point::new(1000.0, y0 + 1.0 + d), Point::new(0.0, y0)]
+        };
+        let a = MultiPolygon(ys[..3].iter().map(|&y| Polygon::new(sliver(y as f64, 1.0), vec![])).collect());
+        let b = MultiPolygon(ys[3..].iter().map(|&y| Polygon::new(sliver(y as f64 + shift as f64 * (2f64).powi(-45), -1.0), vec![])).collect());
+        let points: Vec<Point> = (0..40).flat_map(|i| (0..20).map(move |j| Point::new(i as f64 * 25.0 + 3.7, j as f64 * 0.25 + 0.01))).collect();
+        check_membership(&a, &b, &points, FillRule::EvenOdd)?;
+    }
+
+    #[test]
+    fn area_identities_of_simple_polygons_with_holes(
+        a in prop::collection::vec((0i32..=12, 0i32..=12), 3..12),
+        b in prop::collection::vec((0i32..=12, 0i32..=12), 3..12),
+        hole in prop::collection::vec((4i32..=8, 4i32..=8), 3..6),
+    ) {
+        let (Some(a), Some(b), Some(h)) = (star(a, (6.5, 6.5)), star(b, (5.5, 6.5)), star(hole, (6.25, 6.25))) else {
+            return Err(TestCaseError::reject("not a simple polygon"));
+        };
+        let a = MultiPolygon(vec![Polygon::new(a, vec![])]);
+        // The hole only where it lies inside b's exterior without touching it.
+        let with_hole = MultiPolygon(vec![Polygon::new(b.clone(), vec![h.iter().rev().copied().collect()])]);
+        let b = if validate(&with_hole).is_ok() { with_hole } else { MultiPolygon(vec![Polygon::new(b, vec![])]) };
+        let area = |op| overlay(op, &a, &b, &Options::default()).unwrap().area();
+        let (i, u, d, x) = (area(Operation::Intersection), area(Operation::Union), area(Operation::Difference), area(Operation::Xor));
+        let (sa, sb) = (shoelace(&a), shoelace(&b));
+        let tolerance = 1e-9 * (sa + sb).max(1.0);
+        prop_assert!((u - (sa + sb - i)).abs() <= tolerance, "|A∪B| = {u}, |A| + |B| − |A∩B| = {}", sa + sb - i);
+        prop_assert!((d - (sa - i)).abs() <= tolerance, "|A−B| = {d}, |A| − |A∩B| = {}", sa - i);
+        prop_assert!((x - (u - i)).abs() <= tolerance, "|A⊕B| = {x}, |A∪B| − |A∩B| = {}", u - i);
+    }
+
+    #[test]
+    fn invariant_under_rotation_swapping_and_reversal(a in grid_operand(6), b in grid_operand(6)) {
+        let (a, b) = (operand(a, 1.0, 0.0), operand(b, 1.0, 0.0));
+        let rotate = |m: &MultiPolygon| map_points(m, |p| Point::new(-p.y, p.x));
+        let options = Options::default();
+        for op in OPS {
+            let base = overlay(op, &a, &b, &options).unwrap();
+            let rotated = overlay(op, &rotate(&a), &rotate(&b), &options).unwrap();
+            prop_assert_eq!(normalise(&rotated), normalise(&rotate(&base)), "{:?} rotated", op);
+            let reversed = overlay(op, &reverse_rings(&a), &reverse_rings(&b), &options).unwrap();
+            prop_assert_eq!(normalise(&reversed), normalise(&base), "{:?} reversed rings", op);
+            if op != Operation::Difference {
+                let swapped = overlay(op, &b, &a, &options).unwrap();
+                prop_assert_eq!(normalise(&swapped), normalise(&base), "{:?} swapped", op);
+            }
+        }
+    }
+
+    #[test]
+    fn n_ary_operations_match_the_oracle(ops in prop::collection::vec(grid_operand(5), 1..5)) {
+        let operands: Vec<MultiPolygon> = ops.into_iter().map(|r| operand(r, 1.0, 0.0)).collect();
+        for op in OPS {
+            let result = overlay_all(op, &operands, &Options::default()).unwrap();
+            prop_assert!(validate(&result).is_ok(), "{:?}: {:?}", op, validate(&result));
+            for p in samples(5, 1.0, 0.0) {
+                if operands.iter().any(|m| on_boundary(m, p)) {
+                    continue;
+                }
+                let ins: Vec<bool> = operands.iter().map(|m| inside_even_odd(m, p)).collect();
+                let want = match op {
+                    Operation::Union => ins.iter().any(|&v| v),
+                    Operation::Intersection => ins.iter().all(|&v| v),
+                    Operation::Xor => ins.iter().filter(|&&v| v).count() % 2 == 1,
+                    Operation::Difference => ins[0] && !ins[1..].iter().any(|&v| v),
+                };
+                prop_assert_eq!(inside_even_odd(&result, p), want, "{:?} at {:?}", op, p);
+            }
+        }
+    }
+}
