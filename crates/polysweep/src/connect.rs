@@ -242,27 +242,23 @@ pub(crate) fn connect(
             (ring[(k + ring.len() - 1) % ring.len()], ring[k])
         })
         .collect();
-    // The orientation twice: of the rounded ring at its leftmost rounded vertex, and exactly at its first vertex
-    // in sweep order (vertex ids follow the sweep). A ring on which they disagree is one that rounding turned
-    // inside out: it is thinner than an ulp, and is dropped like one that rounding flattened.
+    // Orientation exactly, at the ring's first vertex in sweep order (vertex ids follow the sweep); a ring whose
+    // rounded vertices all lie on one line was flattened by rounding and is dropped (`Equal`).
     let turn: Vec<Ordering> = rings
         .iter()
-        .zip(&leftmost)
-        .map(|(ring, &(i, o))| {
-            let p = |v: u32| points[v as usize];
-            let rounded = orient(p(edges[i].from), p(edges[o].from), p(edges[o].to));
+        .map(|ring| {
+            let p = |k: usize| points[edges[ring[k]].from as usize];
+            if (2..ring.len()).all(|k| orient(p(0), p(1), p(k)) == Ordering::Equal) {
+                return Ordering::Equal;
+            }
             let k = (0..ring.len())
                 .min_by_key(|&k| edges[ring[k]].from)
                 .expect("rings are not empty");
-            let (into, out) = (
+            cross(
+                exact,
                 &edges[ring[(k + ring.len() - 1) % ring.len()]],
                 &edges[ring[k]],
-            );
-            if cross(exact, into, out) == rounded {
-                rounded
-            } else {
-                Ordering::Equal
-            }
+            )
         })
         .collect();
     let is_shell = |r: u32| turn[r as usize] == Ordering::Greater;

@@ -125,6 +125,7 @@ impl Sweep {
                 break;
             }
             self.current = point;
+
             self.assign_vertex(e);
             if self.event(e).left {
                 self.process_left(e);
@@ -215,6 +216,7 @@ impl Sweep {
         }
         self.note_close_calls(&p, [below, above]);
         self.selection.set_flags(&mut self.events, e, below);
+
         if below != NONE {
             self.possible_inter(below, e);
         }
