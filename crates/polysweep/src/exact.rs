@@ -38,6 +38,9 @@ pub(crate) struct SweepPoint {
     pub approx: [f64; 2],
     /// Index of the exact coordinates in [`Exact::crossings`], or `INPUT`.
     crossing: u32,
+    /// Which coordinates of a crossing are exactly their approximation (e.g. x on a vertical input edge), so that
+    /// comparisons of them need no exact arithmetic.
+    representable: [bool; 2],
 }
 
 impl SweepPoint {
@@ -45,6 +48,7 @@ impl SweepPoint {
         SweepPoint {
             approx: p,
             crossing: INPUT,
+            representable: [true; 2],
         }
     }
 
@@ -99,7 +103,7 @@ pub(crate) struct Exact {
 
 impl Exact {
     fn exact(&self, p: &SweepPoint, axis: usize) -> BigRational {
-        if p.is_input() {
+        if p.representable[axis] {
             rational(p.approx[axis])
         } else {
             self.crossings[p.crossing as usize][axis].clone()
@@ -107,7 +111,7 @@ impl Exact {
     }
 
     fn error(p: &SweepPoint, axis: usize) -> f64 {
-        if p.is_input() {
+        if p.representable[axis] {
             0.0
         } else {
             rounding_error(p.approx[axis])
@@ -117,7 +121,7 @@ impl Exact {
     /// Compares one coordinate of two points exactly.
     pub fn cmp_coordinate(&self, p: &SweepPoint, q: &SweepPoint, axis: usize) -> Ordering {
         let (u, v) = (p.approx[axis], q.approx[axis]);
-        if p.is_input() && q.is_input() {
+        if p.representable[axis] && q.representable[axis] {
             return u.partial_cmp(&v).unwrap_or(Ordering::Equal); // -0 equals 0
         }
         let bound = 2.0 * (Self::error(p, axis) + Self::error(q, axis));
@@ -178,10 +182,12 @@ impl Exact {
             exact[0].to_f64().unwrap_or(f64::NAN),
             exact[1].to_f64().unwrap_or(f64::NAN),
         ];
+        let representable = [0, 1].map(|axis| rational(approx[axis]) == exact[axis]);
         self.crossings.push(exact);
         SweepPoint {
             approx,
             crossing: (self.crossings.len() - 1) as u32,
+            representable,
         }
     }
 

@@ -130,6 +130,14 @@ pub(crate) fn open_len(ring: &[Point]) -> usize {
     }
 }
 
+/// Exact orientation of three points (Shewchuk's adaptive predicate): `Greater` when counter-clockwise.
+pub(crate) fn orient(a: Point, b: Point, c: Point) -> std::cmp::Ordering {
+    let p = |v: Point| robust::Coord { x: v.x, y: v.y };
+    robust::orient2d(p(a), p(b), p(c))
+        .partial_cmp(&0.0)
+        .unwrap_or(std::cmp::Ordering::Equal)
+}
+
 /// Signed area of a ring by the shoelace formula: positive when counter-clockwise.
 pub fn ring_area(ring: &[Point]) -> f64 {
     let n = open_len(ring);

@@ -1,15 +1,8 @@
 //! The output contract, checked. Independent of the sweep: brute-force geometry with exact orientation tests, so
 //! that tests can hold every result to the contract written in the crate docs.
 
-use crate::geometry::{MultiPolygon, Point};
+use crate::geometry::{orient, MultiPolygon, Point};
 use std::cmp::Ordering;
-
-fn orient(a: Point, b: Point, c: Point) -> Ordering {
-    let p = |v: Point| robust::Coord { x: v.x, y: v.y };
-    robust::orient2d(p(a), p(b), p(c))
-        .partial_cmp(&0.0)
-        .unwrap_or(Ordering::Equal)
-}
 
 /// Sweep order of points; -0 equals 0.
 fn lexicographic(a: &Point, b: &Point) -> Ordering {
