@@ -1,8 +1,23 @@
 #!/usr/bin/env bash
-# Runs every test of the repository: formatting, the core's unit, fixture, property and Table 1 tests, and its
-# doc examples. Installs nothing beyond Rust's own toolchain components, which rustup provides.
+# Runs every test of the repository on a fresh machine that has Rust (rustup) and Node 18+: it installs what it
+# needs first (the wasm target, wasm-bindgen-cli 0.2.130, the npm devDependencies, Debian's Chromium), then runs the
+# core's unit, fixture, property and Table 1 tests and doc examples, builds the npm package, and runs its Node,
+# TypeScript and browser tests.
 set -euo pipefail
 cd "$(dirname "$0")"
+
+# --- tools (each step does nothing when already done) ---
+rustup target add wasm32-unknown-unknown
+if ! wasm-bindgen --version 2>/dev/null | grep -q '0\.2\.130'; then
+  cargo install wasm-bindgen-cli --version 0.2.130
+fi
+if [ ! -x /usr/bin/chromium ]; then
+  sudo=""; [ "$(id -u)" -ne 0 ] && sudo=sudo
+  $sudo apt-get update -qq && $sudo apt-get install -y -qq chromium
+fi
+npm ci --no-audit --no-fund
+
+# --- the Rust core ---
 cargo fmt --all -- --check
 # Property tests draw random cases: a fixed seed keeps CI reproducible (unset it locally to explore new cases).
 export PROPTEST_RNG_SEED="${PROPTEST_RNG_SEED:-20091}"
@@ -10,3 +25,8 @@ cargo test --workspace --all-targets
 cargo test --workspace --doc
 # The Table 1 example of the README, end to end.
 cargo run --quiet --release --example boolean -- intersection tests/data/land-50m.json.gz tests/data/squares-3895.json.gz > /dev/null
+
+# --- the npm package ---
+web/build.sh
+node --test web/test/
+npx --no-install tsc -p web/tsconfig.json

@@ -1,0 +1,109 @@
+//! The seam between the core and JavaScript: one function over flat arrays (the GeoArrow / earcut layout), so
+//! that a call crosses the boundary with a few typed arrays instead of one JS object per vertex. The conversion
+//! from and to GeoJSON lives in the package's JavaScript (`web/src/polysweep.js`). No algorithm code here.
+
+use polysweep::{overlay, overlay_all, FillRule, MultiPolygon, Operation, Options, Point, Polygon};
+use wasm_bindgen::prelude::*;
+
+/// Operands in flat form. `coords` holds x, y pairs; ring `r` spans vertices `ring_offsets[r]..ring_offsets[r+1]`;
+/// polygon `p` spans rings `polygon_offsets[p]..polygon_offsets[p+1]` (its first ring is the exterior); operand
+/// `o` spans polygons `operand_offsets[o]..operand_offsets[o+1]`.
+fn operands(coords: &[f64], rings: &[u32], polygons: &[u32], operands: &[u32]) -> Result<Vec<MultiPolygon>, String> {
+    let span = |offsets: &[u32], i: usize, what: &str| -> Result<std::ops::Range<usize>, String> {
+        match (offsets.get(i), offsets.get(i + 1)) {
+            (Some(&a), Some(&b)) if a <= b => Ok(a as usize..b as usize),
+            _ => Err(format!("{what} offsets are not increasing at {i}")),
+        }
+    };
+    let mut out = Vec::new();
+    for o in 0..operands.len().saturating_sub(1) {
+        let mut polygon_list = Vec::new();
+        for p in span(operands, o, "operand")? {
+            let mut ring_list: Vec<Vec<Point>> = Vec::new();
+            for r in span(polygons, p, "polygon")? {
+                let vertices = span(rings, r, "ring")?;
+                let xy = coords.get(2 * vertices.start..2 * vertices.end).ok_or("ring offsets run past the coordinates")?;
+                ring_list.push(xy.chunks_exact(2).map(|c| Point::new(c[0], c[1])).collect());
+            }
+            let mut rings = ring_list.into_iter();
+            polygon_list.push(Polygon::new(rings.next().unwrap_or_default(), rings.collect()));
+        }
+        out.push(MultiPolygon(polygon_list));
+    }
+    Ok(out)
+}
+
+/// The result packed in one array: `[polygons, rings, polygon offsets (polygons + 1), ring offsets (rings + 1),
+/// x, y, ...]`. One array, so that the JavaScript side never holds a handle to free.
+fn pack(result: &MultiPolygon) -> Vec<f64> {
+    let rings: Vec<&Vec<Point>> = result.0.iter().flat_map(|p| p.rings()).collect();
+    let vertices: usize = rings.iter().map(|r| r.len()).sum();
+    let mut out = Vec::with_capacity(2 + result.0.len() + 1 + rings.len() + 1 + 2 * vertices);
+    out.extend([result.0.len() as f64, rings.len() as f64]);
+    let mut ring_count = 0;
+    out.push(0.0);
+    for p in &result.0 {
+        ring_count += 1 + p.holes.len();
+        out.push(ring_count as f64);
+    }
+    let mut vertex_count = 0;
+    out.push(0.0);
+    for r in &rings {
+        vertex_count += r.len();
+        out.push(vertex_count as f64);
+    }
+    for r in &rings {
+        for p in r.iter() {
+            out.extend([p.x, p.y]);
+        }
+    }
+    out
+}
+
+/// `operation` (0 intersection, 1 union, 2 difference, 3 xor) over the flat operands, with `fill_rule` (0
+/// even-odd, 1 non-zero). Two operands take the paper's binary sweep; any other number the n-ary one.
+#[wasm_bindgen]
+pub fn overlay_flat(
+    operation: u8,
+    fill_rule: u8,
+    coords: &[f64],
+    ring_offsets: &[u32],
+    polygon_offsets: &[u32],
+    operand_offsets: &[u32],
+) -> Result<Vec<f64>, JsError> {
+    let operation = match operation {
+        0 => Operation::Intersection,
+        1 => Operation::Union,
+        2 => Operation::Difference,
+        3 => Operation::Xor,
+        _ => return Err(JsError::new("operation must be 0 (intersection), 1 (union), 2 (difference) or 3 (xor)")),
+    };
+    let options = Options { fill_rule: if fill_rule == 1 { FillRule::NonZero } else { FillRule::EvenOdd } };
+    let operands = operands(coords, ring_offsets, polygon_offsets, operand_offsets).map_err(|e| JsError::new(&e))?;
+    let result = match &operands[..] {
+        [a, b] => overlay(operation, a, b, &options),
+        _ => overlay_all(operation, &operands, &options),
+    };
+    result.map(|r| pack(&r)).map_err(|e| JsError::new(&e.to_string()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn flat_operands_unpack_and_results_pack() {
+        // Two unit squares, one per operand.
+        let coords = [0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0, 2.0, 0.0, 3.0, 0.0, 3.0, 1.0, 2.0, 1.0];
+        let ops = operands(&coords, &[0, 4, 8], &[0, 1, 2], &[0, 1, 2]).unwrap();
+        assert_eq!(ops.len(), 2);
+        assert_eq!(ops[1].0[0].exterior[0], Point::new(2.0, 0.0));
+        let union = overlay(Operation::Union, &ops[0], &ops[1], &Options::default()).unwrap();
+        let packed = pack(&union);
+        assert_eq!(&packed[..2], &[2.0, 2.0]);
+        assert_eq!(&packed[2..5], &[0.0, 1.0, 2.0]);
+        assert_eq!(&packed[5..8], &[0.0, 5.0, 10.0]);
+        assert_eq!(packed.len(), 8 + 20);
+        assert!(operands(&coords, &[0, 4, 9], &[0, 1, 2], &[0, 1, 2]).is_err());
+    }
+}
