@@ -8,7 +8,12 @@ use wasm_bindgen::prelude::*;
 /// Operands in flat form. `coords` holds x, y pairs; ring `r` spans vertices `ring_offsets[r]..ring_offsets[r+1]`;
 /// polygon `p` spans rings `polygon_offsets[p]..polygon_offsets[p+1]` (its first ring is the exterior); operand
 /// `o` spans polygons `operand_offsets[o]..operand_offsets[o+1]`.
-fn operands(coords: &[f64], rings: &[u32], polygons: &[u32], operands: &[u32]) -> Result<Vec<MultiPolygon>, String> {
+fn operands(
+    coords: &[f64],
+    rings: &[u32],
+    polygons: &[u32],
+    operands: &[u32],
+) -> Result<Vec<MultiPolygon>, String> {
     let span = |offsets: &[u32], i: usize, what: &str| -> Result<std::ops::Range<usize>, String> {
         match (offsets.get(i), offsets.get(i + 1)) {
             (Some(&a), Some(&b)) if a <= b => Ok(a as usize..b as usize),
@@ -22,11 +27,16 @@ fn operands(coords: &[f64], rings: &[u32], polygons: &[u32], operands: &[u32]) -
             let mut ring_list: Vec<Vec<Point>> = Vec::new();
             for r in span(polygons, p, "polygon")? {
                 let vertices = span(rings, r, "ring")?;
-                let xy = coords.get(2 * vertices.start..2 * vertices.end).ok_or("ring offsets run past the coordinates")?;
+                let xy = coords
+                    .get(2 * vertices.start..2 * vertices.end)
+                    .ok_or("ring offsets run past the coordinates")?;
                 ring_list.push(xy.chunks_exact(2).map(|c| Point::new(c[0], c[1])).collect());
             }
             let mut rings = ring_list.into_iter();
-            polygon_list.push(Polygon::new(rings.next().unwrap_or_default(), rings.collect()));
+            polygon_list.push(Polygon::new(
+                rings.next().unwrap_or_default(),
+                rings.collect(),
+            ));
         }
         out.push(MultiPolygon(polygon_list));
     }
@@ -76,15 +86,28 @@ pub fn overlay_flat(
         1 => Operation::Union,
         2 => Operation::Difference,
         3 => Operation::Xor,
-        _ => return Err(JsError::new("operation must be 0 (intersection), 1 (union), 2 (difference) or 3 (xor)")),
+        _ => {
+            return Err(JsError::new(
+                "operation must be 0 (intersection), 1 (union), 2 (difference) or 3 (xor)",
+            ))
+        }
     };
-    let options = Options { fill_rule: if fill_rule == 1 { FillRule::NonZero } else { FillRule::EvenOdd } };
-    let operands = operands(coords, ring_offsets, polygon_offsets, operand_offsets).map_err(|e| JsError::new(&e))?;
+    let options = Options {
+        fill_rule: if fill_rule == 1 {
+            FillRule::NonZero
+        } else {
+            FillRule::EvenOdd
+        },
+    };
+    let operands = operands(coords, ring_offsets, polygon_offsets, operand_offsets)
+        .map_err(|e| JsError::new(&e))?;
     let result = match &operands[..] {
         [a, b] => overlay(operation, a, b, &options),
         _ => overlay_all(operation, &operands, &options),
     };
-    result.map(|r| pack(&r)).map_err(|e| JsError::new(&e.to_string()))
+    result
+        .map(|r| pack(&r))
+        .map_err(|e| JsError::new(&e.to_string()))
 }
 
 #[cfg(test)]
@@ -94,7 +117,9 @@ mod tests {
     #[test]
     fn flat_operands_unpack_and_results_pack() {
         // Two unit squares, one per operand.
-        let coords = [0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0, 2.0, 0.0, 3.0, 0.0, 3.0, 1.0, 2.0, 1.0];
+        let coords = [
+            0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0, 2.0, 0.0, 3.0, 0.0, 3.0, 1.0, 2.0, 1.0,
+        ];
         let ops = operands(&coords, &[0, 4, 8], &[0, 1, 2], &[0, 1, 2]).unwrap();
         assert_eq!(ops.len(), 2);
         assert_eq!(ops[1].0[0].exterior[0], Point::new(2.0, 0.0));

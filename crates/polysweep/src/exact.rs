@@ -11,9 +11,115 @@
 //! routine). Rounded intersection points are what make float implementations of this sweep fail, so they are
 //! replaced by exact ones.
 
+use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// An exact dyadic number `m · 2^e`: every f64 is one, and sums, differences and products of them are too. No
+/// division and so no gcd: this is what makes the exact path cheap.
+#[derive(Clone, Debug)]
+struct Dyadic {
+    m: BigInt,
+    e: i64,
+}
+
+impl Dyadic {
+    fn from_f64(v: f64) -> Self {
+        if v == 0.0 {
+            return Dyadic {
+                m: BigInt::zero(),
+                e: 0,
+            };
+        }
+        let bits = v.to_bits();
+        let exponent = ((bits >> 52) & 0x7ff) as i64;
+        let fraction = bits & ((1u64 << 52) - 1);
+        // Normal numbers have the implicit leading bit; subnormals have exponent 1 - 1075.
+        let (mantissa, e) = if exponent == 0 {
+            (fraction, -1074)
+        } else {
+            (fraction | (1u64 << 52), exponent - 1075)
+        };
+        let m = BigInt::from(mantissa);
+        Dyadic {
+            m: if v < 0.0 { -m } else { m },
+            e,
+        }
+    }
+
+    fn one() -> Self {
+        Dyadic {
+            m: BigInt::from(1),
+            e: 0,
+        }
+    }
+
+    fn sign(&self) -> Ordering {
+        self.m.sign().cmp(&num_bigint::Sign::NoSign)
+    }
+
+    /// The nearest f64 to `self / den` (`den` positive).
+    fn divide_to_f64(&self, den: &Dyadic) -> f64 {
+        let ratio = BigRational::new_raw(self.m.clone(), den.m.clone())
+            .to_f64()
+            .unwrap_or(f64::NAN);
+        // Exact scaling by a power of two while the result stays a normal number (the range check of the input
+        // keeps crossings there); `powi` of 2 is exact.
+        ratio * 2f64.powi((self.e - den.e) as i32)
+    }
+}
+
+impl Add for &Dyadic {
+    type Output = Dyadic;
+    fn add(self, other: &Dyadic) -> Dyadic {
+        let (hi, lo) = if self.e >= other.e {
+            (self, other)
+        } else {
+            (other, self)
+        };
+        Dyadic {
+            m: (&hi.m << (hi.e - lo.e) as usize) + &lo.m,
+            e: lo.e,
+        }
+    }
+}
+
+impl Neg for &Dyadic {
+    type Output = Dyadic;
+    fn neg(self) -> Dyadic {
+        Dyadic {
+            m: -&self.m,
+            e: self.e,
+        }
+    }
+}
+
+impl Sub for &Dyadic {
+    type Output = Dyadic;
+    fn sub(self, other: &Dyadic) -> Dyadic {
+        self + &-other
+    }
+}
+
+impl Mul for &Dyadic {
+    type Output = Dyadic;
+    fn mul(self, other: &Dyadic) -> Dyadic {
+        Dyadic {
+            m: &self.m * &other.m,
+            e: self.e + other.e,
+        }
+    }
+}
+
+/// A crossing point exactly: `(x / den, y / den)` with `den > 0`.
+#[derive(Clone, Debug)]
+struct Crossing {
+    x: Dyadic,
+    y: Dyadic,
+    den: Dyadic,
+}
 
 /// The supporting line of an input segment, from its first endpoint in sweep order (`a`) to its last (`b`).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -70,20 +176,6 @@ fn rounding_error(v: f64) -> f64 {
     v.abs() * FILTER_RELATIVE / 4.0 + FILTER_ABSOLUTE
 }
 
-fn rational(v: f64) -> BigRational {
-    BigRational::from_float(v).expect("coordinates are validated finite")
-}
-
-fn sign(v: &BigRational) -> Ordering {
-    if v.is_zero() {
-        Ordering::Equal
-    } else if v.is_positive() {
-        Ordering::Greater
-    } else {
-        Ordering::Less
-    }
-}
-
 /// The sign of `value`, if it is farther from zero than `bound`.
 fn filtered_sign(value: f64, bound: f64) -> Option<Ordering> {
     if value > bound {
@@ -98,15 +190,20 @@ fn filtered_sign(value: f64, bound: f64) -> Option<Ordering> {
 /// The exact coordinates of every crossing point made so far.
 #[derive(Default)]
 pub(crate) struct Exact {
-    crossings: Vec<[BigRational; 2]>,
+    crossings: Vec<Crossing>,
 }
 
 impl Exact {
-    fn exact(&self, p: &SweepPoint, axis: usize) -> BigRational {
+    /// One coordinate of `p` as a fraction with a positive denominator.
+    fn fraction(&self, p: &SweepPoint, axis: usize) -> (Dyadic, Dyadic) {
         if p.representable[axis] {
-            rational(p.approx[axis])
+            (Dyadic::from_f64(p.approx[axis]), Dyadic::one())
         } else {
-            self.crossings[p.crossing as usize][axis].clone()
+            let c = &self.crossings[p.crossing as usize];
+            (
+                if axis == 0 { c.x.clone() } else { c.y.clone() },
+                c.den.clone(),
+            )
         }
     }
 
@@ -125,7 +222,10 @@ impl Exact {
             return u.partial_cmp(&v).unwrap_or(Ordering::Equal); // -0 equals 0
         }
         let bound = 2.0 * (Self::error(p, axis) + Self::error(q, axis));
-        filtered_sign(u - v, bound).unwrap_or_else(|| self.exact(p, axis).cmp(&self.exact(q, axis)))
+        filtered_sign(u - v, bound).unwrap_or_else(|| {
+            let ((pn, pd), (qn, qd)) = (self.fraction(p, axis), self.fraction(q, axis));
+            (&(&pn * &qd) - &(&qn * &pd)).sign()
+        })
     }
 
     /// The sweep order of points: left to right, and bottom to top at equal x (§4, §7.1).
@@ -149,10 +249,13 @@ impl Exact {
             + (left.abs() + right.abs()) * FILTER_RELATIVE
             + FILTER_ABSOLUTE;
         filtered_sign(left - right, bound).unwrap_or_else(|| {
-            let (ax, ay) = (rational(line.a[0]), rational(line.a[1]));
-            let dx = rational(line.b[0]) - &ax;
-            let dy = rational(line.b[1]) - &ay;
-            sign(&(dx * (self.exact(p, 1) - ay) - dy * (self.exact(p, 0) - ax)))
+            // (b - a) × (p - a), multiplied through by p's positive denominator.
+            let [ax, ay, bx, by] =
+                [line.a[0], line.a[1], line.b[0], line.b[1]].map(Dyadic::from_f64);
+            let c = &self.crossings[p.crossing as usize];
+            let (dx, dy) = (&bx - &ax, &by - &ay);
+            let (px, py) = (&c.x - &(&ax * &c.den), &c.y - &(&ay * &c.den));
+            (&(&dx * &py) - &(&dy * &px)).sign()
         })
     }
 
@@ -163,27 +266,32 @@ impl Exact {
         let (left, right) = (lx * my, ly * mx);
         let bound = (left.abs() + right.abs()) * FILTER_RELATIVE + FILTER_ABSOLUTE;
         filtered_sign(left - right, bound).unwrap_or_else(|| {
-            let d = |line: &Line, axis: usize| rational(line.b[axis]) - rational(line.a[axis]);
-            sign(&(d(l, 0) * d(m, 1) - d(l, 1) * d(m, 0)))
+            let d = |line: &Line, axis: usize| {
+                &Dyadic::from_f64(line.b[axis]) - &Dyadic::from_f64(line.a[axis])
+            };
+            (&(&d(l, 0) * &d(m, 1)) - &(&d(l, 1) * &d(m, 0))).sign()
         })
     }
 
     /// The point where the lines of `l` and `m` cross. The caller has established that they are not parallel.
     pub fn crossing(&mut self, l: &Line, m: &Line) -> SweepPoint {
-        let r = |v: [f64; 2]| [rational(v[0]), rational(v[1])];
+        let r = |v: [f64; 2]| [Dyadic::from_f64(v[0]), Dyadic::from_f64(v[1])];
         let ([a1x, a1y], [b1x, b1y], [a2x, a2y], [b2x, b2y]) = (r(l.a), r(l.b), r(m.a), r(m.b));
-        let (d1x, d1y) = (b1x - &a1x, b1y - &a1y);
-        let (d2x, d2y) = (b2x - &a2x, b2y - &a2y);
-        let denominator = &d1x * &d2y - &d1y * &d2x;
-        debug_assert!(!denominator.is_zero(), "crossing of parallel lines");
-        let t = ((&a2x - &a1x) * &d2y - (&a2y - &a1y) * &d2x) / denominator;
-        let exact = [a1x + &t * d1x, a1y + t * d1y];
-        let approx = [
-            exact[0].to_f64().unwrap_or(f64::NAN),
-            exact[1].to_f64().unwrap_or(f64::NAN),
-        ];
-        let representable = [0, 1].map(|axis| rational(approx[axis]) == exact[axis]);
-        self.crossings.push(exact);
+        let (d1x, d1y) = (&b1x - &a1x, &b1y - &a1y);
+        let (d2x, d2y) = (&b2x - &a2x, &b2y - &a2y);
+        // The crossing is a1 + d1 · t / den with t = (a2 - a1) × d2 and den = d1 × d2.
+        let mut den = &(&d1x * &d2y) - &(&d1y * &d2x);
+        let mut t = &(&(&a2x - &a1x) * &d2y) - &(&(&a2y - &a1y) * &d2x);
+        debug_assert!(!den.m.is_zero(), "crossing of parallel lines");
+        if den.m.is_negative() {
+            (den, t) = (-&den, -&t);
+        }
+        let x = &(&a1x * &den) + &(&d1x * &t);
+        let y = &(&a1y * &den) + &(&d1y * &t);
+        let approx = [x.divide_to_f64(&den), y.divide_to_f64(&den)];
+        let representable = [(&x, approx[0]), (&y, approx[1])]
+            .map(|(n, a)| (&(&Dyadic::from_f64(a) * &den) - n).sign() == Ordering::Equal);
+        self.crossings.push(Crossing { x, y, den });
         SweepPoint {
             approx,
             crossing: (self.crossings.len() - 1) as u32,
@@ -255,5 +363,45 @@ mod tests {
         assert_eq!(exact.cross_directions(&east, &north), Ordering::Greater);
         assert_eq!(exact.cross_directions(&north, &east), Ordering::Less);
         assert_eq!(exact.cross_directions(&east, &east), Ordering::Equal);
+    }
+}
+#[cfg(test)]
+mod dyadic_tests {
+    use super::*;
+    #[test]
+    fn crossing_matches_float_formula_on_real_coordinates() {
+        let mut exact = Exact::default();
+        let cases = [
+            (
+                [-179.5, 10.25],
+                [-170.125, 12.0],
+                [-178.0, 15.0],
+                [-172.0, 9.0],
+            ),
+            (
+                [12.3456789, -45.6789],
+                [13.1, -44.2],
+                [12.5, -44.0],
+                [12.9, -46.0],
+            ),
+        ];
+        for (a1, b1, a2, b2) in cases {
+            let l = Line { a: a1, b: b1 };
+            let m = Line { a: a2, b: b2 };
+            let p = exact.crossing(&l, &m);
+            let d1 = [b1[0] - a1[0], b1[1] - a1[1]];
+            let d2 = [b2[0] - a2[0], b2[1] - a2[1]];
+            let t = ((a2[0] - a1[0]) * d2[1] - (a2[1] - a1[1]) * d2[0])
+                / (d1[0] * d2[1] - d1[1] * d2[0]);
+            let f = [a1[0] + t * d1[0], a1[1] + t * d1[1]];
+            assert!(
+                (p.approx[0] - f[0]).abs() < 1e-9 && (p.approx[1] - f[1]).abs() < 1e-9,
+                "{:?} vs {:?}",
+                p.approx,
+                f
+            );
+            assert_eq!(exact.orient(&l, &p), Ordering::Equal);
+            assert_eq!(exact.orient(&m, &p), Ordering::Equal);
+        }
     }
 }

@@ -183,13 +183,14 @@ impl Sweep {
             }
             let line = self.event(e).line;
             let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
-            let distance = ((p.approx[0] - line.a[0]) * dy - (p.approx[1] - line.a[1]) * dx).abs()
-                / dx.hypot(dy);
+            let cross = (p.approx[0] - line.a[0]) * dy - (p.approx[1] - line.a[1]) * dx;
             let magnitude = [a.approx, b.approx, p.approx]
                 .iter()
                 .flatten()
                 .fold(0.0f64, |m, v| m.max(v.abs()));
-            if distance <= crate::connect::clearance(magnitude) {
+            // distance = |cross| / |d|, compared squared to avoid the square root.
+            let clearance = crate::connect::clearance(magnitude);
+            if cross * cross <= clearance * clearance * (dx * dx + dy * dy) {
                 self.close_call = true;
             }
         }

@@ -1,0 +1,247 @@
+// The built npm package in a real browser (headless Chromium driven by playwright-core): as a plain ES module, in a
+// module Web Worker, and bundled by Vite. A small static server serves the repository (and the Vite build under
+// /vite/); the pages run the shared fixtures of tests/fixtures and Node compares their results, normalised, with
+// the expected ones, exactly as fixtures.test.mjs does.
+//
+// Needs /usr/bin/chromium and a built pkg/ (web/build.sh). The browser-side files are in ./browser/.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import http from 'node:http';
+import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync } from 'node:fs';
+import { readFile, stat } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+import { build, createLogger } from 'vite';
+import { normalise } from './normalise.mjs';
+
+const root = fileURLToPath(new URL('../../', import.meta.url));
+const fixturesDir = path.join(root, 'tests', 'fixtures');
+const packageEntry = fileURLToPath(new URL('../../pkg/polysweep.js', import.meta.url));
+const packageWasm = fileURLToPath(new URL('../../pkg/polysweep_wasm_bg.wasm', import.meta.url));
+const viteApp = fileURLToPath(new URL('./browser/vite-app/', import.meta.url));
+
+const TIMEOUT = 120_000;
+const PAGE_TIMEOUT = 60_000;
+const OPERATIONS = ['intersection', 'union', 'difference', 'xor'];
+
+const fixtureFiles = readdirSync(fixturesDir).filter((f) => f.endsWith('.json')).sort();
+const fixtures = fixtureFiles.map((f) => JSON.parse(readFileSync(path.join(fixturesDir, f), 'utf8')));
+
+const CONTENT_TYPES = {
+  '.html': 'text/html; charset=utf-8',
+  '.js': 'text/javascript; charset=utf-8',
+  '.mjs': 'text/javascript; charset=utf-8',
+  '.wasm': 'application/wasm',
+  '.json': 'application/json; charset=utf-8',
+  '.css': 'text/css; charset=utf-8',
+  '.map': 'application/json; charset=utf-8',
+};
+
+/** URL prefix → directory served under it, besides the repository root at '/'. */
+const mounts = new Map();
+const temporary = [];
+let server;
+let origin;
+let context;
+
+/** The file a request path names, or null when it escapes its directory. */
+function fileFor(pathname) {
+  let base = root;
+  let rest = pathname;
+  for (const [prefix, dir] of mounts) {
+    if (pathname.startsWith(prefix)) {
+      base = dir;
+      rest = pathname.slice(prefix.length);
+      break;
+    }
+  }
+  const file = path.join(base, rest);
+  const inside = path.relative(base, file);
+  return inside.startsWith('..') || path.isAbsolute(inside) ? null : file;
+}
+
+async function handle(request, response) {
+  const send = (status, body, type = 'text/plain; charset=utf-8') => {
+    response.writeHead(status, { 'Content-Type': type, 'Cache-Control': 'no-store' });
+    response.end(request.method === 'HEAD' ? undefined : body);
+  };
+  if (request.method !== 'GET' && request.method !== 'HEAD') return send(405, 'method not allowed');
+  let pathname;
+  try {
+    pathname = decodeURIComponent(new URL(request.url, 'http://localhost').pathname);
+  } catch {
+    return send(400, 'bad request');
+  }
+  if (pathname === '/fixtures-index.json') return send(200, JSON.stringify(fixtureFiles), CONTENT_TYPES['.json']);
+  let file = fileFor(pathname);
+  if (file === null) return send(403, 'forbidden');
+  try {
+    if ((await stat(file)).isDirectory()) file = path.join(file, 'index.html');
+    const body = await readFile(file);
+    return send(200, body, CONTENT_TYPES[path.extname(file)] ?? 'application/octet-stream');
+  } catch {
+    return send(404, `not found: ${pathname}`);
+  }
+}
+
+function temporaryDir(prefix) {
+  const dir = mkdtempSync(path.join(tmpdir(), prefix));
+  temporary.push(dir);
+  return dir;
+}
+
+before(async () => {
+  for (const file of [packageEntry, packageWasm]) {
+    assert.ok(existsSync(file), `${path.relative(root, file)} is missing: build the package first (web/build.sh)`);
+  }
+  server = http.createServer((request, response) => {
+    handle(request, response).catch((error) => {
+      response.destroy(error);
+    });
+  });
+  await new Promise((resolve, reject) => {
+    server.once('error', reject);
+    server.listen(0, '127.0.0.1', resolve);
+  });
+  origin = `http://127.0.0.1:${server.address().port}`;
+  context = await chromium.launchPersistentContext(temporaryDir('polysweep-chromium-'), {
+    executablePath: '/usr/bin/chromium',
+    headless: true,
+    args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update', '--no-first-run', '--disable-sync', '--disable-quic'],
+  });
+});
+
+after(async () => {
+  await context?.close();
+  if (server) {
+    server.closeAllConnections();
+    await new Promise((resolve) => server.close(resolve));
+  }
+  for (const dir of temporary) rmSync(dir, { recursive: true, force: true });
+});
+
+/**
+ * Opens `url` in a new page and waits until it sets `window.results` or `window.failure`, or until it logs a console
+ * error, throws an uncaught error or fails a request. Returns the page's outcome with everything it complained about
+ * and every URL it requested.
+ */
+async function runPage(url) {
+  const page = await context.newPage();
+  const problems = [];
+  const requests = [];
+  let complained;
+  const complaint = new Promise((resolve) => {
+    complained = resolve;
+  });
+  const problem = (text) => {
+    problems.push(text);
+    complained();
+  };
+  const onConsole = (where) => (message) => {
+    if (message.type() === 'error') problem(`${where} console.error: ${message.text()}`);
+  };
+  page.on('console', onConsole('page'));
+  page.on('pageerror', (error) => problem(`page error: ${error.stack ?? error.message}`));
+  page.on('worker', (worker) => worker.on('console', onConsole('worker')));
+  page.on('request', (request) => requests.push(request.url()));
+  page.on('requestfailed', (request) => problem(`request failed: ${request.url()}: ${request.failure()?.errorText}`));
+  page.on('response', (response) => {
+    if (response.status() >= 400) problem(`HTTP ${response.status()}: ${response.url()}`);
+  });
+  try {
+    await page.goto(url);
+    const settled = page
+      .waitForFunction(() => window.results !== undefined || window.failure !== undefined, null, { timeout: PAGE_TIMEOUT })
+      .then(() => page.evaluate(() => ({ results: window.results, failure: window.failure })));
+    const outcome = await Promise.race([settled, complaint.then(() => ({}))]);
+    return { ...outcome, problems, requests };
+  } finally {
+    await page.close();
+  }
+}
+
+/** Fails with everything the page reported when it did not finish cleanly. */
+function assertClean({ failure, problems }) {
+  assert.equal(failure, undefined, `the page failed: ${failure}`);
+  assert.deepEqual(problems, [], `the page reported errors:\n${problems.join('\n')}`);
+}
+
+/** One subtest per fixture: the four results, normalised, equal the expected ones, and every ring is closed. */
+async function checkFixtureResults(t, results) {
+  assert.deepEqual(Object.keys(results).sort(), fixtures.map((f) => f.name).sort(), 'a result for every fixture');
+  for (const fixture of fixtures) {
+    await t.test(fixture.name, () => {
+      for (const operation of OPERATIONS) {
+        const result = results[fixture.name][operation];
+        assert.ok(Array.isArray(result), `${operation} threw in the browser: ${result?.error}`);
+        assert.deepEqual(normalise(result), normalise(fixture.expected[operation]), operation);
+        for (const polygon of result) {
+          for (const ring of polygon) assert.deepEqual(ring[0], ring[ring.length - 1], `${operation}: rings are closed`);
+        }
+      }
+    });
+  }
+}
+
+/** Signed shoelace area of MultiPolygon coordinates: positive for counter-clockwise exteriors and clockwise holes. */
+function area(multiPolygon) {
+  let twice = 0;
+  for (const polygon of multiPolygon) {
+    for (const ring of polygon) {
+      for (let k = 0; k + 1 < ring.length; k++) twice += ring[k][0] * ring[k + 1][1] - ring[k + 1][0] * ring[k][1];
+    }
+  }
+  return twice / 2;
+}
+
+test('plain ES module: every fixture in Chromium', { timeout: TIMEOUT }, async (t) => {
+  const outcome = await runPage(`${origin}/web/test/browser/plain.html`);
+  assertClean(outcome);
+  assert.ok(outcome.requests.includes(`${origin}/pkg/polysweep_wasm_bg.wasm`), 'the page fetched the .wasm');
+  await checkFixtureResults(t, outcome.results);
+});
+
+test('module Web Worker: union of two overlapping squares', { timeout: TIMEOUT }, async () => {
+  const outcome = await runPage(`${origin}/web/test/browser/worker.html`);
+  assertClean(outcome);
+  const result = outcome.results.union;
+  assert.equal(result.length, 1, 'one polygon');
+  assert.equal(result[0].length, 1, 'without holes');
+  assert.equal(area(result), 7);
+});
+
+test('bundled by Vite: every fixture in Chromium', { timeout: TIMEOUT }, async (t) => {
+  const outDir = temporaryDir('polysweep-vite-out-');
+  const warnings = [];
+  const logger = createLogger('warn');
+  logger.warn = (message) => {
+    warnings.push(message);
+  };
+  await build({
+    root: viteApp,
+    base: './',
+    configFile: false,
+    logLevel: 'warn',
+    customLogger: logger,
+    cacheDir: temporaryDir('polysweep-vite-cache-'),
+    resolve: { alias: { polysweep: packageEntry } },
+    build: { target: 'es2022', outDir, emptyOutDir: true },
+  });
+  for (const warning of warnings) t.diagnostic(`vite warning: ${warning}`);
+
+  const files = readdirSync(outDir, { recursive: true }).filter((f) => statSync(path.join(outDir, f)).isFile());
+  const wasmAssets = files.filter((f) => f.endsWith('.wasm'));
+  assert.equal(wasmAssets.length, 1, `one .wasm asset in the build, got: ${files.join(', ')}`);
+  assert.ok(readFileSync(path.join(outDir, wasmAssets[0])).equals(readFileSync(packageWasm)), 'the asset is pkg’s .wasm');
+  assert.ok(files.includes('index.html'));
+
+  mounts.set('/vite/', outDir);
+  const outcome = await runPage(`${origin}/vite/`);
+  assertClean(outcome);
+  const wasmUrl = `${origin}/vite/${wasmAssets[0].split(path.sep).join('/')}`;
+  assert.ok(outcome.requests.includes(wasmUrl), `the page fetched the bundled .wasm (${wasmUrl})`);
+  assert.ok(!outcome.requests.some((url) => url.startsWith(`${origin}/pkg/`)), 'nothing came from /pkg/');
+  await checkFixtureResults(t, outcome.results);
+});
