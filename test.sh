@@ -28,5 +28,5 @@ cargo run --quiet --release --example boolean -- intersection tests/data/land-50
 
 # --- the npm package ---
 web/build.sh
-node --test web/test/
+node --test web/test/*.test.mjs
 npx --no-install tsc -p web/tsconfig.json

@@ -2,7 +2,7 @@
 // and that the module keeps working after an error.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { union, intersection, difference, xor, overlayFlat } from '../../pkg/polysweep.js';
+import { union, intersection, difference, xor, overlayFlat } from 'polysweep';
 
 const square = (x, y, s = 2) => [[[x, y], [x + s, y], [x + s, y + s], [x, y + s], [x, y]]];
 const area = (mp) =>

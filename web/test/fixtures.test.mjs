@@ -2,7 +2,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readdirSync, readFileSync } from 'node:fs';
-import { union, intersection, difference, xor } from '../../pkg/polysweep.js';
+import { union, intersection, difference, xor } from 'polysweep';
 import { normalise } from './normalise.mjs';
 
 const dir = new URL('../../tests/fixtures/', import.meta.url);

@@ -1,6 +1,6 @@
 // Compiled by tsc (never run): the shipped types accept what the README shows and type results by their kind.
-import { union, intersection, difference, xor, overlayFlat } from '../../pkg/polysweep.js';
-import type { MultiPolygon, MultiPolygonGeometry, MultiPolygonFeature, FlatMultiPolygon } from '../../pkg/polysweep.js';
+import { union, intersection, difference, xor, overlayFlat } from 'polysweep';
+import type { MultiPolygon, MultiPolygonGeometry, MultiPolygonFeature, FlatMultiPolygon } from 'polysweep';
 
 const a: MultiPolygon = [[[[0, 0], [2, 0], [2, 2], [0, 2], [0, 0]]]];
 const polygon = [[[1, 1], [3, 1], [3, 3], [1, 3], [1, 1]]];

@@ -1,5 +1,5 @@
-// The package as an application bundles it: a bare `polysweep` import (aliased to pkg/polysweep.js by the Vite
-// build in browser.test.mjs), with Vite emitting and rewriting the .wasm asset the package locates via
+// The package as an application bundles it: a bare `polysweep` import (resolved through node_modules, a link
+// to pkg/, by the package's browser export), with Vite emitting and rewriting the .wasm asset the package locates via
 // `new URL(…, import.meta.url)`.
 //
 // TypeScript rather than main.js on purpose: `node --test web/test/` loads every .js file under a `test` directory
