@@ -15,7 +15,9 @@ if [ ! -x /usr/bin/chromium ]; then
   sudo=""; [ "$(id -u)" -ne 0 ] && sudo=sudo
   $sudo apt-get update -qq && $sudo apt-get install -y -qq chromium
 fi
-npm ci --no-audit --no-fund
+# `npm install` (not `npm ci`): the lock pins every version, and npm adds the platform-specific optional packages
+# the lock cannot list for every machine.
+npm install --no-audit --no-fund
 
 # --- the Rust core ---
 cargo fmt --all -- --check

@@ -340,8 +340,8 @@ mod tests {
             a: [0.5, 0.5],
             b: [12.0, 12.0],
         };
-        // 0.5 + 2^-53 rounds to 0.5 but 0.5 + 2^-52 does not: just above the diagonal.
-        let p = SweepPoint::input([24.0, 24.0 + 24.0 * f64::EPSILON]);
+        // 24 · (1 + 2^-52) is the float right after 24: one ulp above the diagonal.
+        let p = SweepPoint::input([24.0, 24.0 + 24.0 * 2f64.powi(-52)]);
         assert_eq!(exact.orient(&line, &p), Ordering::Greater);
         assert_eq!(
             exact.orient(&line, &SweepPoint::input([24.0, 24.0])),
@@ -364,10 +364,7 @@ mod tests {
         assert_eq!(exact.cross_directions(&north, &east), Ordering::Less);
         assert_eq!(exact.cross_directions(&east, &east), Ordering::Equal);
     }
-}
-#[cfg(test)]
-mod dyadic_tests {
-    use super::*;
+
     #[test]
     fn crossing_matches_float_formula_on_real_coordinates() {
         let mut exact = Exact::default();
@@ -395,7 +392,8 @@ mod dyadic_tests {
                 / (d1[0] * d2[1] - d1[1] * d2[0]);
             let f = [a1[0] + t * d1[0], a1[1] + t * d1[1]];
             assert!(
-                (p.approx[0] - f[0]).abs() < 1e-9 && (p.approx[1] - f[1]).abs() < 1e-9,
+                (p.approx[0] - f[0]).abs() < 2f64.powi(-30)
+                    && (p.approx[1] - f[1]).abs() < 2f64.powi(-30),
                 "{:?} vs {:?}",
                 p.approx,
                 f
