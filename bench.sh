@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# The benchmark (issue 5): the paper's Table 1 on real land data, native and wasm, every engine in one run, then
+# the table (docs/benchmarks.md) and the chart (docs/benchmarks.svg). Run ./test.sh once before, which installs the
+# tools and builds the npm package. Timings are medians of one run on this machine; nothing here asserts them.
+set -euo pipefail
+cd "$(dirname "$0")"
+cargo run --quiet --release -p polysweep-bench
+web/build.sh
+node web/bench/wasm.mjs
+node web/bench/report.mjs
