@@ -156,20 +156,31 @@ pub(crate) fn rounding_may_matter(vertices: &[SweepPoint]) -> bool {
 /// Output vertex of each sweep vertex: its coordinates rounded to f64, where distinct exact points that round to
 /// the same floats become one vertex.
 fn merge_rounded(vertices: &[SweepPoint]) -> (Vec<u32>, Vec<Point>) {
-    let mut ids = std::collections::HashMap::with_capacity(vertices.len());
-    let mut points = Vec::with_capacity(vertices.len());
-    let vertex_ids = vertices
-        .iter()
-        .map(|v| {
-            // `+ 0.0` turns -0 into 0, so that both are one key.
-            let [x, y] = v.approx.map(|c| c + 0.0);
-            *ids.entry((x.to_bits(), y.to_bits())).or_insert_with(|| {
+    let mut ids: Vec<u32> = Vec::with_capacity(vertices.len());
+    let mut points: Vec<Point> = Vec::with_capacity(vertices.len());
+    // Rounding is monotone, so the vertices that round to one x are consecutive in sweep order. Distinct input
+    // vertices are distinct floats: only a block of equal x that holds a crossing needs looking into.
+    let (mut block_start, mut block_has_crossing) = (0, false);
+    for (i, v) in vertices.iter().enumerate() {
+        let [x, y] = v.approx;
+        if i == 0 || vertices[i - 1].approx[0] != x {
+            (block_start, block_has_crossing) = (i, false);
+        }
+        block_has_crossing |= !v.is_input();
+        let same = if block_has_crossing {
+            (block_start..i).find(|&j| vertices[j].approx[1] == y)
+        } else {
+            None
+        };
+        match same {
+            Some(j) => ids.push(ids[j]),
+            None => {
                 points.push(Point::new(x, y));
-                (points.len() - 1) as u32
-            })
-        })
-        .collect();
-    (vertex_ids, points)
+                ids.push((points.len() - 1) as u32);
+            }
+        }
+    }
+    (ids, points)
 }
 
 /// The polygon with the smallest exterior that contains `hole`, by exact point-in-ring tests of its vertices.

@@ -125,8 +125,21 @@ pub(crate) struct EventQueue {
 }
 
 impl EventQueue {
-    pub fn new(mut initial: Vec<EventId>, order: impl Fn(EventId, EventId) -> Ordering) -> Self {
-        initial.sort_unstable_by(|&a, &b| order(a, b));
+    /// `key` is each event's point, exact for the initial events (input vertices), so that the sort compares
+    /// floats and calls `order` only on ties.
+    pub fn new(
+        mut initial: Vec<EventId>,
+        key: impl Fn(EventId) -> [f64; 2],
+        order: impl Fn(EventId, EventId) -> Ordering,
+    ) -> Self {
+        initial.sort_unstable_by(|&a, &b| {
+            let (ka, kb) = (key(a), key(b));
+            ka[0]
+                .partial_cmp(&kb[0])
+                .unwrap_or(Ordering::Equal)
+                .then(ka[1].partial_cmp(&kb[1]).unwrap_or(Ordering::Equal))
+                .then_with(|| order(a, b))
+        });
         EventQueue {
             initial,
             next_initial: 0,
@@ -189,7 +202,7 @@ mod tests {
     fn queue_pops_in_order_across_initial_and_pushed_events() {
         let keys = [5, 1, 9, 3, 7, 2, 8];
         let order = |a: EventId, b: EventId| keys[a as usize].cmp(&keys[b as usize]);
-        let mut queue = EventQueue::new(vec![0, 1, 2], order);
+        let mut queue = EventQueue::new(vec![0, 1, 2], |e| [keys[e as usize] as f64, 0.0], order);
         for e in [3, 4, 5, 6] {
             queue.push(e, order);
         }

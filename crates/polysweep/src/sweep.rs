@@ -61,7 +61,11 @@ impl Sweep {
     pub fn new(events: Vec<SweepEvent>, selection: Selection, stop_x: f64) -> Self {
         let exact = Exact::default();
         let left_events = (0..events.len() as u32).collect();
-        let queue = EventQueue::new(left_events, |a, b| event_order(&events, &exact, a, b));
+        let queue = EventQueue::new(
+            left_events,
+            |e| events[e as usize].point.approx,
+            |a, b| event_order(&events, &exact, a, b),
+        );
         Sweep {
             events,
             exact,
