@@ -42,23 +42,50 @@ function coordinatesOf(geom, operand) {
   throw new TypeError(`operand ${operand}: expected GeoJSON Polygon or MultiPolygon coordinates, geometry or feature`);
 }
 
-/** Flattens the operands' coordinates into one coordinate array and three offset arrays. */
-function flatten(operands) {
+/** One operand's MultiPolygon coordinates in the flat form, checking their shape on the way. */
+function toFlat(multiPolygon, o) {
+  if (!Array.isArray(multiPolygon)) throw new TypeError(`operand ${o}: coordinates must be an array of polygons`);
+  let vertices = 0;
+  let rings = 0;
+  multiPolygon.forEach((polygon, p) => {
+    if (!Array.isArray(polygon)) throw new TypeError(`operand ${o}, polygon ${p}: must be an array of rings`);
+    polygon.forEach((ring, r) => {
+      if (!Array.isArray(ring)) throw new TypeError(`operand ${o}, polygon ${p}, ring ${r}: must be an array of positions`);
+      rings++;
+      vertices += ring.length;
+    });
+  });
+  const coords = new Float64Array(2 * vertices);
+  const ringOffsets = new Uint32Array(rings + 1);
+  const polygonOffsets = new Uint32Array(multiPolygon.length + 1);
+  let v = 0;
+  let r = 0;
+  multiPolygon.forEach((polygon, p) => {
+    polygon.forEach((ring, ri) => {
+      ring.forEach((position, vi) => {
+        if (!Array.isArray(position) || typeof position[0] !== 'number' || typeof position[1] !== 'number') {
+          throw new TypeError(`operand ${o}, polygon ${p}, ring ${ri}, vertex ${vi}: a position must be an array of two numbers`);
+        }
+        coords[2 * v] = position[0];
+        coords[2 * v + 1] = position[1];
+        v++;
+      });
+      ringOffsets[++r] = v;
+    });
+    polygonOffsets[p + 1] = r;
+  });
+  return { coords, ringOffsets, polygonOffsets };
+}
+
+/** Operands in the flat form, concatenated, with the polygon offsets of each operand. */
+function concatenate(operands) {
   let vertices = 0;
   let rings = 0;
   let polygons = 0;
-  for (let o = 0; o < operands.length; o++) {
-    if (!Array.isArray(operands[o])) throw new TypeError(`operand ${o}: coordinates must be an array of polygons`);
-    for (let p = 0; p < operands[o].length; p++) {
-      const polygon = operands[o][p];
-      if (!Array.isArray(polygon)) throw new TypeError(`operand ${o}, polygon ${p}: must be an array of rings`);
-      polygons++;
-      for (let r = 0; r < polygon.length; r++) {
-        if (!Array.isArray(polygon[r])) throw new TypeError(`operand ${o}, polygon ${p}, ring ${r}: must be an array of positions`);
-        rings++;
-        vertices += polygon[r].length;
-      }
-    }
+  for (const o of operands) {
+    vertices += o.coords.length / 2;
+    rings += o.ringOffsets.length - 1;
+    polygons += o.polygonOffsets.length - 1;
   }
   const coords = new Float64Array(2 * vertices);
   const ringOffsets = new Uint32Array(rings + 1);
@@ -67,22 +94,14 @@ function flatten(operands) {
   let v = 0;
   let r = 0;
   let p = 0;
-  operands.forEach((operand, o) => {
-    operand.forEach((polygon, pi) => {
-      polygon.forEach((ring, ri) => {
-        ring.forEach((position, vi) => {
-          if (!Array.isArray(position) || typeof position[0] !== 'number' || typeof position[1] !== 'number') {
-            throw new TypeError(`operand ${o}, polygon ${pi}, ring ${ri}, vertex ${vi}: a position must be an array of two numbers`);
-          }
-          coords[2 * v] = position[0];
-          coords[2 * v + 1] = position[1];
-          v++;
-        });
-        ringOffsets[++r] = v;
-      });
-      polygonOffsets[++p] = r;
-    });
-    operandOffsets[o + 1] = p;
+  operands.forEach((o, i) => {
+    coords.set(o.coords, 2 * v);
+    for (let k = 1; k < o.ringOffsets.length; k++) ringOffsets[r + k] = v + o.ringOffsets[k];
+    for (let k = 1; k < o.polygonOffsets.length; k++) polygonOffsets[p + k] = r + o.polygonOffsets[k];
+    v += o.coords.length / 2;
+    r += o.ringOffsets.length - 1;
+    p += o.polygonOffsets.length - 1;
+    operandOffsets[i + 1] = p;
   });
   return { coords, ringOffsets, polygonOffsets, operandOffsets };
 }
@@ -126,7 +145,7 @@ function operate(name, args) {
   const fillRule = fillRuleOf(options);
   if (args.length === 0) throw new TypeError(`${name}: at least one operand is required`);
   const inputs = args.map(coordinatesOf);
-  const packed = run(OPERATIONS[name], fillRule, flatten(inputs.map((i) => i.coordinates)));
+  const packed = run(OPERATIONS[name], fillRule, concatenate(inputs.map((input, o) => toFlat(input.coordinates, o))));
   const coordinates = toCoordinates(unpack(packed));
   const first = inputs[0];
   if (first.kind === 'feature') {
@@ -165,34 +184,12 @@ export function overlayFlat(operation, operands, options) {
     throw new TypeError(`operation must be one of ${Object.keys(OPERATIONS).join(', ')}, not ${JSON.stringify(operation)}`);
   }
   const fillRule = fillRuleOf(options);
-  let vertices = 0;
-  let rings = 0;
-  let polygons = 0;
   operands.forEach((o, i) => {
     if (!(o?.coords instanceof Float64Array) || !(o.ringOffsets instanceof Uint32Array) || !(o.polygonOffsets instanceof Uint32Array)) {
       throw new TypeError(`operand ${i}: expected {coords: Float64Array, ringOffsets: Uint32Array, polygonOffsets: Uint32Array}`);
     }
-    vertices += o.coords.length / 2;
-    rings += o.ringOffsets.length - 1;
-    polygons += o.polygonOffsets.length - 1;
   });
-  const coords = new Float64Array(2 * vertices);
-  const ringOffsets = new Uint32Array(rings + 1);
-  const polygonOffsets = new Uint32Array(polygons + 1);
-  const operandOffsets = new Uint32Array(operands.length + 1);
-  let v = 0;
-  let r = 0;
-  let p = 0;
-  operands.forEach((o, i) => {
-    coords.set(o.coords, 2 * v);
-    for (let k = 1; k < o.ringOffsets.length; k++) ringOffsets[r + k] = v + o.ringOffsets[k];
-    for (let k = 1; k < o.polygonOffsets.length; k++) polygonOffsets[p + k] = r + o.polygonOffsets[k];
-    v += o.coords.length / 2;
-    r += o.ringOffsets.length - 1;
-    p += o.polygonOffsets.length - 1;
-    operandOffsets[i + 1] = p;
-  });
-  const packed = run(OPERATIONS[operation], fillRule, { coords, ringOffsets, polygonOffsets, operandOffsets });
+  const packed = run(OPERATIONS[operation], fillRule, concatenate(operands));
   const out = unpack(packed);
   return { coords: Float64Array.from(out.coords), ringOffsets: out.ringOffsets, polygonOffsets: out.polygonOffsets };
 }
