@@ -1,10 +1,10 @@
 //! Exact geometric predicates on the points of the sweep (see the [robustness page](crate::robustness)).
 //!
 //! A point of the sweep is either an input vertex (two f64, exact) or the crossing of the supporting lines of two
-//! input segments, kept exactly as a pair of rationals. Every predicate the sweep asks — the order of two points
+//! input segments, kept exactly as `(x, y) / d` in dyadic big integers. Every predicate the sweep asks — the order of two points
 //! (§4's event order) and the side of a point with respect to an input segment's line (the status order of §3,
 //! §7.1 and the intersection tests of Fig. 6) — is answered exactly: first by a floating-point filter with a proven
-//! error bound, and only when the filter cannot decide, by rational arithmetic. Computed points are never rounded
+//! error bound, and only when the filter cannot decide, by big-integer arithmetic. Computed points are never rounded
 //! for a decision; they are rounded to f64 only when the result rings are written out.
 //!
 //! Departure from the paper: the paper assumes real arithmetic (and Schneider and Eberly's float intersection
