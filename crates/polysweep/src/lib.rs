@@ -78,7 +78,7 @@ pub struct Stats {
     pub input_edges: usize,
     /// Points where two edges properly cross (constructed intersection points).
     pub crossings: usize,
-    /// Events processed, including those made by subdivision.
+    /// Events created, including those made by subdivision.
     pub events: usize,
     /// Extra sweeps over the rounded result because rounding put vertices within a few ulps of each other (see
     /// the robustness page). Almost always 0.
@@ -107,7 +107,7 @@ pub fn overlay_with_stats(
     let mut events = Vec::new();
     input::add_events(&mut events, subject, 0);
     input::add_events(&mut events, clipping, 1);
-    let stop_x = stop_x(operation, subject, std::slice::from_ref(clipping));
+    let stop_x = stop_x(operation, subject, [clipping]);
     Ok(sweep(
         events,
         Selection::Pair {
@@ -120,10 +120,14 @@ pub fn overlay_with_stats(
 
 /// Past this x the result can have no edge, so the sweep stops there (the end of the subject for a difference,
 /// of the operand that ends first for an intersection).
-fn stop_x(operation: Operation, first: &MultiPolygon, others: &[MultiPolygon]) -> f64 {
+fn stop_x<'a>(
+    operation: Operation,
+    first: &MultiPolygon,
+    others: impl IntoIterator<Item = &'a MultiPolygon>,
+) -> f64 {
     match operation {
         Operation::Intersection => others
-            .iter()
+            .into_iter()
             .map(input::max_x)
             .fold(input::max_x(first), f64::min),
         Operation::Difference => input::max_x(first),
@@ -232,6 +236,15 @@ pub fn overlay_all(
     operands: &[MultiPolygon],
     options: &Options,
 ) -> Result<MultiPolygon, Error> {
+    let operands: Vec<&MultiPolygon> = operands.iter().collect();
+    overlay_refs(operation, &operands, options)
+}
+
+fn overlay_refs(
+    operation: Operation,
+    operands: &[&MultiPolygon],
+    options: &Options,
+) -> Result<MultiPolygon, Error> {
     for (index, operand) in operands.iter().enumerate() {
         input::check(index, operand)?;
     }
@@ -259,7 +272,12 @@ pub fn overlay_all(
         operation,
         operands: in_slot_0,
     };
-    Ok(sweep(events, selection, stop_x(operation, first, rest)).0)
+    Ok(sweep(
+        events,
+        selection,
+        stop_x(operation, first, rest.iter().copied()),
+    )
+    .0)
 }
 
 /// The union of all operands.
@@ -278,12 +296,20 @@ pub fn xor_all(operands: &[MultiPolygon]) -> Result<MultiPolygon, Error> {
 }
 
 /// `subject` minus every one of `clips`. Errors name `subject` as operand 0 and `clips[i]` as operand `i + 1`.
+///
+/// ```
+/// use polysweep::{difference_all, MultiPolygon};
+/// let square = |x: f64, side: f64| {
+///     MultiPolygon::from_coordinates(&[vec![vec![[x, 0.0], [x + side, 0.0], [x + side, side], [x, side]]]])
+/// };
+/// let rest = difference_all(&square(0.0, 4.0), &[square(0.0, 1.0), square(3.0, 1.0)])?;
+/// assert_eq!(rest.area(), 14.0);
+/// # Ok::<(), polysweep::Error>(())
+/// ```
 pub fn difference_all(
     subject: &MultiPolygon,
     clips: &[MultiPolygon],
 ) -> Result<MultiPolygon, Error> {
-    let operands: Vec<MultiPolygon> = std::iter::once(subject.clone())
-        .chain(clips.iter().cloned())
-        .collect();
-    overlay_all(Operation::Difference, &operands, &Options::default())
+    let operands: Vec<&MultiPolygon> = std::iter::once(subject).chain(clips).collect();
+    overlay_refs(Operation::Difference, &operands, &Options::default())
 }
