@@ -1,16 +1,14 @@
 #!/usr/bin/env bash
 # Runs every test of the repository on a fresh machine that has Rust (rustup) and Node 18+: it installs what it
 # needs first (the wasm target, wasm-bindgen-cli 0.2.130, the npm devDependencies, Debian's Chromium), then runs the
-# core's unit, fixture, property and Table 1 tests and doc examples, builds the npm package, and runs its Node,
-# TypeScript and browser tests.
+# core's unit, fixture, property and Table 1 tests, the playground's native tests and the doc examples, builds the
+# npm package and the playground for the browser, and runs the package's Node, TypeScript and browser tests and the
+# playground's browser test.
 set -euo pipefail
 cd "$(dirname "$0")"
 
 # --- tools (each step does nothing when already done) ---
-rustup target add wasm32-unknown-unknown
-if ! wasm-bindgen --version 2>/dev/null | grep -q '0\.2\.130'; then
-  cargo install wasm-bindgen-cli --version 0.2.130
-fi
+source web/tools.sh
 if [ ! -x /usr/bin/chromium ]; then
   sudo=""; [ "$(id -u)" -ne 0 ] && sudo=sudo
   $sudo apt-get update -qq && $sudo apt-get install -y -qq chromium
@@ -26,9 +24,10 @@ export PROPTEST_RNG_SEED="${PROPTEST_RNG_SEED:-20091}"
 cargo test --workspace --all-targets
 cargo test --workspace --doc
 # The Table 1 example of the README, end to end.
-cargo run --quiet --release --example boolean -- intersection tests/data/land-50m.json.gz tests/data/squares-3895.json.gz > /dev/null
+cargo run --quiet --release -p polysweep --features geojson --example boolean -- intersection tests/data/land-50m.json.gz tests/data/squares-3895.json.gz > /dev/null
 
-# --- the npm package ---
+# --- the npm package and the playground, in Node and in headless Chromium ---
 web/build.sh
+web/build-playground.sh
 node --test web/test/*.test.mjs
 npx --no-install tsc -p web/tsconfig.json

@@ -1,18 +1,17 @@
 // The built npm package in a real browser (headless Chromium driven by playwright-core): as a plain ES module, in a
-// module Web Worker, and bundled by Vite. A small static server serves the repository (and the Vite build under
-// /vite/); the pages run the shared fixtures of tests/fixtures and Node compares their results, normalised, with
-// the expected ones, exactly as fixtures.test.mjs does.
+// module Web Worker, and bundled by Vite. ../serve.mjs serves the repository (and the Vite build under /vite/); the
+// pages run the shared fixtures of tests/fixtures and Node compares their results, normalised, with the expected
+// ones, exactly as fixtures.test.mjs does.
 //
 // Needs /usr/bin/chromium and a built pkg/ (web/build.sh). The browser-side files are in ./browser/.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import http from 'node:http';
 import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync } from 'node:fs';
-import { readFile, stat } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
+import { serve } from '../serve.mjs';
+import { launchChromium } from './chromium.mjs';
 import { build, createLogger } from 'vite';
 import { normalise } from './normalise.mjs';
 
@@ -28,62 +27,13 @@ const OPERATIONS = ['intersection', 'union', 'difference', 'xor'];
 const fixtureFiles = readdirSync(fixturesDir).filter((f) => f.endsWith('.json')).sort();
 const fixtures = fixtureFiles.map((f) => JSON.parse(readFileSync(path.join(fixturesDir, f), 'utf8')));
 
-const CONTENT_TYPES = {
-  '.html': 'text/html; charset=utf-8',
-  '.js': 'text/javascript; charset=utf-8',
-  '.mjs': 'text/javascript; charset=utf-8',
-  '.wasm': 'application/wasm',
-  '.json': 'application/json; charset=utf-8',
-  '.css': 'text/css; charset=utf-8',
-  '.map': 'application/json; charset=utf-8',
-};
-
 /** URL prefix → directory served under it, besides the repository root at '/'. */
 const mounts = new Map();
 const temporary = [];
 let server;
 let origin;
 let context;
-
-/** The file a request path names, or null when it escapes its directory. */
-function fileFor(pathname) {
-  let base = root;
-  let rest = pathname;
-  for (const [prefix, dir] of mounts) {
-    if (pathname.startsWith(prefix)) {
-      base = dir;
-      rest = pathname.slice(prefix.length);
-      break;
-    }
-  }
-  const file = path.join(base, rest);
-  const inside = path.relative(base, file);
-  return inside.startsWith('..') || path.isAbsolute(inside) ? null : file;
-}
-
-async function handle(request, response) {
-  const send = (status, body, type = 'text/plain; charset=utf-8') => {
-    response.writeHead(status, { 'Content-Type': type, 'Cache-Control': 'no-store' });
-    response.end(request.method === 'HEAD' ? undefined : body);
-  };
-  if (request.method !== 'GET' && request.method !== 'HEAD') return send(405, 'method not allowed');
-  let pathname;
-  try {
-    pathname = decodeURIComponent(new URL(request.url, 'http://localhost').pathname);
-  } catch {
-    return send(400, 'bad request');
-  }
-  if (pathname === '/fixtures-index.json') return send(200, JSON.stringify(fixtureFiles), CONTENT_TYPES['.json']);
-  let file = fileFor(pathname);
-  if (file === null) return send(403, 'forbidden');
-  try {
-    if ((await stat(file)).isDirectory()) file = path.join(file, 'index.html');
-    const body = await readFile(file);
-    return send(200, body, CONTENT_TYPES[path.extname(file)] ?? 'application/octet-stream');
-  } catch {
-    return send(404, `not found: ${pathname}`);
-  }
-}
+let closeChromium;
 
 function temporaryDir(prefix) {
   const dir = mkdtempSync(path.join(tmpdir(), prefix));
@@ -95,25 +45,12 @@ before(async () => {
   for (const file of [path.join(root, "pkg", "polysweep.js"), packageWasm]) {
     assert.ok(existsSync(file), `${path.relative(root, file)} is missing: build the package first (web/build.sh)`);
   }
-  server = http.createServer((request, response) => {
-    handle(request, response).catch((error) => {
-      response.destroy(error);
-    });
-  });
-  await new Promise((resolve, reject) => {
-    server.once('error', reject);
-    server.listen(0, '127.0.0.1', resolve);
-  });
-  origin = `http://127.0.0.1:${server.address().port}`;
-  context = await chromium.launchPersistentContext(temporaryDir('polysweep-chromium-'), {
-    executablePath: '/usr/bin/chromium',
-    headless: true,
-    args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update', '--no-first-run', '--disable-sync', '--disable-quic'],
-  });
+  ({ server, origin } = await serve({ mounts, generated: new Map([['/fixtures-index.json', () => fixtureFiles]]) }));
+  ({ context, close: closeChromium } = await launchChromium());
 });
 
 after(async () => {
-  await context?.close();
+  await closeChromium?.();
   if (server) {
     server.closeAllConnections();
     await new Promise((resolve) => server.close(resolve));

@@ -1,21 +1,19 @@
 //! Boolean operation on two GeoJSON files, result as GeoJSON on stdout.
 //!
 //! ```text
-//! cargo run --release --example boolean -- <intersection|union|difference|xor> a.geojson b.geojson
+//! cargo run --release --features geojson --example boolean -- <intersection|union|difference|xor> a.geojson b.geojson
 //! ```
 //!
-//! Each file holds a Polygon or MultiPolygon geometry, a Feature with one, or a FeatureCollection of them; all
-//! polygons of a file form one operand (a polygon set under the even-odd rule). Files ending in `.gz` are read
-//! gzip-compressed. The result is a GeoJSON MultiPolygon geometry; its area, vertex counts and the time of the
+//! Each file holds GeoJSON as [`polysweep::geojson::parse`] reads it; all polygons of a file form one operand (a
+//! polygon set under the even-odd rule). Files ending in `.gz` are read gzip-compressed. The result is a GeoJSON MultiPolygon geometry; its area, vertex counts and the time of the
 //! operation go to stderr.
 
-use polysweep::{overlay_with_stats, MultiPolygon, Operation, Options};
-use serde_json::{json, Value};
+use polysweep::{geojson, overlay_with_stats, MultiPolygon, Operation, Options};
 use std::io::Read;
 use std::process::ExitCode;
 use std::time::Instant;
 
-fn read(path: &str) -> Result<Value, String> {
+fn read(path: &str) -> Result<String, String> {
     let bytes = std::fs::read(path).map_err(|e| format!("{path}: {e}"))?;
     let mut text = String::new();
     if path.ends_with(".gz") {
@@ -25,59 +23,11 @@ fn read(path: &str) -> Result<Value, String> {
     } else {
         text = String::from_utf8(bytes).map_err(|e| format!("{path}: {e}"))?;
     }
-    serde_json::from_str(&text).map_err(|e| format!("{path}: {e}"))
-}
-
-fn coordinates(value: &Value, what: &str) -> Result<Vec<Vec<[f64; 2]>>, String> {
-    let rings = value.as_array().ok_or(format!(
-        "{what}: polygon coordinates must be an array of rings"
-    ))?;
-    rings
-        .iter()
-        .map(|ring| {
-            ring.as_array()
-                .ok_or(format!("{what}: a ring must be an array of positions"))?
-                .iter()
-                .map(|p| {
-                    match p.as_array().map(|a| {
-                        (
-                            a.first().and_then(Value::as_f64),
-                            a.get(1).and_then(Value::as_f64),
-                        )
-                    }) {
-                        Some((Some(x), Some(y))) => Ok([x, y]),
-                        _ => Err(format!("{what}: a position must be [x, y] numbers")),
-                    }
-                })
-                .collect()
-        })
-        .collect()
-}
-
-/// Collects the polygons of a GeoJSON object into `out`.
-fn polygons(value: &Value, out: &mut Vec<Vec<Vec<[f64; 2]>>>) -> Result<(), String> {
-    match value["type"].as_str() {
-        Some("Polygon") => out.push(coordinates(&value["coordinates"], "Polygon")?),
-        Some("MultiPolygon") => {
-            for p in value["coordinates"].as_array().ok_or("MultiPolygon: coordinates must be an array")? {
-                out.push(coordinates(p, "MultiPolygon")?);
-            }
-        }
-        Some("Feature") => polygons(&value["geometry"], out)?,
-        Some("FeatureCollection") => {
-            for f in value["features"].as_array().ok_or("FeatureCollection: features must be an array")? {
-                polygons(f, out)?;
-            }
-        }
-        other => return Err(format!("unsupported GeoJSON type {other:?}: expected Polygon, MultiPolygon, Feature or FeatureCollection")),
-    }
-    Ok(())
+    Ok(text)
 }
 
 fn operand(path: &str) -> Result<MultiPolygon, String> {
-    let mut coords = Vec::new();
-    polygons(&read(path)?, &mut coords).map_err(|e| format!("{path}: {e}"))?;
-    Ok(MultiPolygon::from_coordinates(&coords))
+    geojson::parse(&read(path)?).map_err(|e| format!("{path}: {e}"))
 }
 
 fn run(args: &[String]) -> Result<(), String> {
@@ -113,10 +63,7 @@ fn run(args: &[String]) -> Result<(), String> {
         result.area(),
         elapsed.as_secs_f64() * 1e3
     );
-    println!(
-        "{}",
-        json!({ "type": "MultiPolygon", "coordinates": result.to_coordinates() })
-    );
+    println!("{}", geojson::to_geometry(&result));
     Ok(())
 }
 

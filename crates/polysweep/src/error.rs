@@ -33,6 +33,14 @@ pub enum Error {
     CoordinateOutOfRange { at: Location, value: f64 },
 }
 
+impl Error {
+    /// The vertex the error is about.
+    pub fn location(&self) -> Location {
+        let (Error::NonFiniteCoordinate { at, .. } | Error::CoordinateOutOfRange { at, .. }) = self;
+        *at
+    }
+}
+
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {

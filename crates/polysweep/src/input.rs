@@ -3,7 +3,7 @@
 use crate::error::{Error, Location};
 use crate::events::{Operand, SweepEvent};
 use crate::exact::{Line, SweepPoint};
-use crate::geometry::{open_len, MultiPolygon};
+use crate::geometry::{open_len, MultiPolygon, Point, Polygon};
 
 /// Largest coordinate magnitude accepted: 2^200. Within it (and above [`MIN_COORDINATE`]) the products formed by
 /// the exact predicates neither overflow nor underflow, which their proofs assume.
@@ -37,10 +37,57 @@ pub(crate) fn check(index: usize, operand: &MultiPolygon) -> Result<(), Error> {
     Ok(())
 }
 
-/// Appends two events per edge of every ring of `polygons`. Edges of zero length are skipped; a ring with fewer
-/// than three vertices still gives its edges, which cancel each other (§7.2).
-pub(crate) fn add_events(events: &mut Vec<SweepEvent>, polygons: &MultiPolygon, operand: Operand) {
-    for ring in polygons.0.iter().flat_map(|p| p.rings()) {
+/// An axis-aligned box, closed; the empty box has min > max.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Bounds {
+    min: [f64; 2],
+    max: [f64; 2],
+}
+
+impl Bounds {
+    pub const EVERYWHERE: Bounds = Bounds {
+        min: [f64::NEG_INFINITY; 2],
+        max: [f64::INFINITY; 2],
+    };
+
+    pub fn of<'a>(points: impl IntoIterator<Item = &'a Point>) -> Bounds {
+        let empty = Bounds {
+            min: [f64::INFINITY; 2],
+            max: [f64::NEG_INFINITY; 2],
+        };
+        points.into_iter().fold(empty, |b, p| Bounds {
+            min: [b.min[0].min(p.x), b.min[1].min(p.y)],
+            max: [b.max[0].max(p.x), b.max[1].max(p.y)],
+        })
+    }
+
+    pub fn of_polygons(polygons: &MultiPolygon) -> Bounds {
+        Bounds::of(polygons.0.iter().flat_map(|p| p.rings()).flatten())
+    }
+
+    pub fn max_x(&self) -> f64 {
+        self.max[0]
+    }
+
+    fn meets(&self, other: &Bounds) -> bool {
+        (0..2).all(|k| self.min[k] <= other.max[k] && other.min[k] <= self.max[k])
+    }
+}
+
+/// Appends two events per edge of every ring of `polygons` whose polygon's box meets `region`. Edges of zero length
+/// are skipped; a ring with fewer than three vertices still gives its edges, which cancel each other (§7.2).
+///
+/// Leaving out polygons outside `region` is exact, not a heuristic: a ring's winding number is 0 outside its box, so
+/// within `region` the operand's interior, under either fill rule, is that of the polygons kept.
+pub(crate) fn add_events(
+    events: &mut Vec<SweepEvent>,
+    polygons: &MultiPolygon,
+    operand: Operand,
+    region: &Bounds,
+) {
+    let near =
+        |p: &&Polygon| *region == Bounds::EVERYWHERE || Bounds::of(&p.exterior).meets(region);
+    for ring in polygons.0.iter().filter(near).flat_map(|p| p.rings()) {
         let n = open_len(ring);
         for i in 0..n {
             let (from, to) = (ring[i], ring[(i + 1) % n]);
@@ -66,15 +113,4 @@ pub(crate) fn add_events(events: &mut Vec<SweepEvent>, polygons: &MultiPolygon, 
             events.push(right);
         }
     }
-}
-
-/// The largest x of an operand's vertices, or -∞ when it has none.
-pub(crate) fn max_x(polygons: &MultiPolygon) -> f64 {
-    polygons
-        .0
-        .iter()
-        .flat_map(|p| p.rings())
-        .flatten()
-        .map(|p| p.x)
-        .fold(f64::NEG_INFINITY, f64::max)
 }

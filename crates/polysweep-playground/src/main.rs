@@ -1,0 +1,17 @@
+//! `cargo run -p polysweep-playground`: the playground in a native window. The browser build starts from `lib.rs`.
+
+#[cfg(not(target_arch = "wasm32"))]
+fn main() -> eframe::Result {
+    let options = eframe::NativeOptions {
+        viewport: eframe::egui::ViewportBuilder::default().with_inner_size([1200.0, 800.0]),
+        ..Default::default()
+    };
+    eframe::run_native(
+        "polysweep playground",
+        options,
+        Box::new(|cc| Ok(Box::new(polysweep_playground::Playground::new(cc)))),
+    )
+}
+
+#[cfg(target_arch = "wasm32")]
+fn main() {}

@@ -1,0 +1,98 @@
+//! The five operations the playground offers, run on the core as it is (no wasm, no JS in between), with the
+//! figures the side panel shows.
+
+use crate::scene::{Operand, Scene};
+use polysweep::{overlay_with_stats, Error, FillRule, MultiPolygon, Operation, Options};
+use web_time::Instant;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Op {
+    Intersection,
+    Union,
+    SubjectMinusClipping,
+    ClippingMinusSubject,
+    Xor,
+}
+
+impl Op {
+    pub const ALL: [Op; 5] = [
+        Op::Intersection,
+        Op::Union,
+        Op::SubjectMinusClipping,
+        Op::ClippingMinusSubject,
+        Op::Xor,
+    ];
+
+    pub fn label(self) -> &'static str {
+        match self {
+            Op::Intersection => "P ∩ Q  intersection",
+            Op::Union => "P ∪ Q  union",
+            Op::SubjectMinusClipping => "P − Q  difference",
+            Op::ClippingMinusSubject => "Q − P  difference",
+            Op::Xor => "P ⊕ Q  xor",
+        }
+    }
+
+    /// The name used in saved file names.
+    pub fn slug(self) -> &'static str {
+        match self {
+            Op::Intersection => "intersection",
+            Op::Union => "union",
+            Op::SubjectMinusClipping => "p-minus-q",
+            Op::ClippingMinusSubject => "q-minus-p",
+            Op::Xor => "xor",
+        }
+    }
+}
+
+/// A computed result and what it took.
+#[derive(Clone, Debug)]
+pub struct Outcome {
+    pub result: MultiPolygon,
+    pub crossings: usize,
+    pub milliseconds: f64,
+}
+
+/// Runs `op` on the scene's operands. Errors name the operand as the user sees it (P is 0, Q is 1), also for Q − P,
+/// which the core computes with the operands swapped.
+pub fn run(op: Op, scene: &Scene, fill_rule: FillRule) -> Result<Outcome, Error> {
+    let (p, q) = (
+        scene.operand(Operand::Subject),
+        scene.operand(Operand::Clipping),
+    );
+    let options = Options { fill_rule };
+    let start = Instant::now();
+    let computed = match op {
+        Op::Intersection => overlay_with_stats(Operation::Intersection, p, q, &options),
+        Op::Union => overlay_with_stats(Operation::Union, p, q, &options),
+        Op::SubjectMinusClipping => overlay_with_stats(Operation::Difference, p, q, &options),
+        Op::ClippingMinusSubject => {
+            overlay_with_stats(Operation::Difference, q, p, &options).map_err(swap_operands)
+        }
+        Op::Xor => overlay_with_stats(Operation::Xor, p, q, &options),
+    };
+    let milliseconds = start.elapsed().as_secs_f64() * 1e3;
+    computed.map(|(result, stats)| Outcome {
+        result,
+        crossings: stats.crossings,
+        milliseconds,
+    })
+}
+
+/// The region one operand covers under the fill rule: what its fill shows.
+pub fn region(scene: &Scene, which: Operand, fill_rule: FillRule) -> Result<MultiPolygon, Error> {
+    let operand = scene.operand(which);
+    let empty = MultiPolygon::default();
+    let options = Options { fill_rule };
+    match which {
+        Operand::Subject => polysweep::overlay(Operation::Union, operand, &empty, &options),
+        Operand::Clipping => polysweep::overlay(Operation::Union, &empty, operand, &options),
+    }
+}
+
+fn swap_operands(mut error: Error) -> Error {
+    let (Error::NonFiniteCoordinate { at, .. } | Error::CoordinateOutOfRange { at, .. }) =
+        &mut error;
+    at.operand = 1 - at.operand;
+    error
+}

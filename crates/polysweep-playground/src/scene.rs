@@ -1,0 +1,256 @@
+//! What the user edits: the two operands of the Boolean operation, as polysweep polygon sets, with undo and redo.
+//!
+//! A vertex is addressed exactly as the core's errors address it — operand, polygon, ring (0 is the exterior,
+//! k is hole k − 1), vertex — so an error from the core points straight at the vertex to fix. Rings are kept open
+//! (no repeated closing point) so that every vertex is one handle; the core accepts open rings.
+//!
+//! Every change goes through [`Scene::edit`], which records the state before it for undo. A vertex drag is one
+//! step: [`Scene::checkpoint`] records it when the drag starts, and the moves change the operands in place.
+
+use polysweep::{Location, MultiPolygon, Point, Polygon, Ring};
+
+/// Which operand: the subject P or the clipping polygon Q.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Operand {
+    Subject,
+    Clipping,
+}
+
+impl Operand {
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Operand::Subject => "P (subject)",
+            Operand::Clipping => "Q (clipping)",
+        }
+    }
+}
+
+/// One vertex of one ring of one polygon of an operand.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct VertexId {
+    pub operand: Operand,
+    pub polygon: usize,
+    pub ring: usize,
+    pub vertex: usize,
+}
+
+impl VertexId {
+    /// The vertex a core error names, if it still exists in `scene`.
+    pub fn from_location(scene: &Scene, at: &Location) -> Option<VertexId> {
+        let operand = [Operand::Subject, Operand::Clipping]
+            .get(at.operand)
+            .copied()?;
+        let id = VertexId {
+            operand,
+            polygon: at.polygon,
+            ring: at.ring,
+            vertex: at.vertex,
+        };
+        scene
+            .ring(id)
+            .filter(|ring| at.vertex < ring.len())
+            .map(|_| id)
+    }
+}
+
+const UNDO_DEPTH: usize = 200;
+
+/// The two operands and their history.
+#[derive(Clone, Debug, Default)]
+pub struct Scene {
+    operands: [MultiPolygon; 2],
+    undo: Vec<[MultiPolygon; 2]>,
+    redo: Vec<[MultiPolygon; 2]>,
+}
+
+impl Scene {
+    pub fn operand(&self, which: Operand) -> &MultiPolygon {
+        &self.operands[which.index()]
+    }
+
+    /// Changes the operands as one undoable step.
+    pub fn edit(&mut self, change: impl FnOnce(&mut [MultiPolygon; 2])) {
+        self.checkpoint();
+        change(&mut self.operands);
+    }
+
+    /// Records the current state for undo; a drag calls this once, then [`Scene::move_vertex`] on every move.
+    pub fn checkpoint(&mut self) {
+        if self.undo.len() == UNDO_DEPTH {
+            self.undo.remove(0);
+        }
+        self.undo.push(self.operands.clone());
+        self.redo.clear();
+    }
+
+    /// Replaces one operand, e.g. with a loaded file.
+    pub fn replace(&mut self, which: Operand, polygons: MultiPolygon) {
+        self.edit(|operands| operands[which.index()] = open_rings(polygons));
+    }
+
+    /// Replaces both operands (a preset) as one step.
+    pub fn replace_both(&mut self, subject: MultiPolygon, clipping: MultiPolygon) {
+        self.edit(|operands| *operands = [open_rings(subject), open_rings(clipping)]);
+    }
+
+    pub fn can_undo(&self) -> bool {
+        !self.undo.is_empty()
+    }
+
+    pub fn can_redo(&self) -> bool {
+        !self.redo.is_empty()
+    }
+
+    pub fn undo(&mut self) {
+        if let Some(previous) = self.undo.pop() {
+            self.redo
+                .push(std::mem::replace(&mut self.operands, previous));
+        }
+    }
+
+    pub fn redo(&mut self) {
+        if let Some(next) = self.redo.pop() {
+            self.undo.push(std::mem::replace(&mut self.operands, next));
+        }
+    }
+
+    pub fn ring(&self, id: VertexId) -> Option<&Ring> {
+        let polygon = self.operand(id.operand).0.get(id.polygon)?;
+        polygon.rings().nth(id.ring)
+    }
+
+    pub fn point(&self, id: VertexId) -> Option<Point> {
+        self.ring(id)?.get(id.vertex).copied()
+    }
+
+    /// Moves a vertex (within the current undo step).
+    pub fn move_vertex(&mut self, id: VertexId, to: Point) {
+        if let Some(p) =
+            ring_mut(&mut self.operands[id.operand.index()], id).and_then(|r| r.get_mut(id.vertex))
+        {
+            *p = to;
+        }
+    }
+
+    /// Deletes a vertex as one undo step. A ring left with fewer than 3 vertices goes with it; an exterior ring takes
+    /// its holes along, since a hole without its shell has nothing to be a hole of.
+    pub fn delete_vertex(&mut self, id: VertexId) {
+        if self.point(id).is_none() {
+            return;
+        }
+        self.edit(|operands| {
+            let polygons = &mut operands[id.operand.index()].0;
+            let polygon = &mut polygons[id.polygon];
+            let ring = if id.ring == 0 {
+                &mut polygon.exterior
+            } else {
+                &mut polygon.holes[id.ring - 1]
+            };
+            ring.remove(id.vertex);
+            if ring.len() < 3 {
+                if id.ring == 0 {
+                    polygons.remove(id.polygon);
+                } else {
+                    polygon.holes.remove(id.ring - 1);
+                }
+            }
+        });
+    }
+
+    /// Adds a closed ring drawn by the user to an operand, as one undo step. A ring that starts inside an exterior
+    /// ring of that operand becomes a hole of it (the innermost such polygon); any other ring starts a new polygon.
+    /// Under the even-odd rule both read the same; the distinction shapes the saved GeoJSON and the non-zero rule.
+    pub fn add_ring(&mut self, which: Operand, ring: Ring) {
+        if ring.len() < 3 {
+            return;
+        }
+        let host = self
+            .operand(which)
+            .0
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| contains(&p.exterior, ring[0]));
+        let host = host.min_by(|a, b| {
+            polysweep::ring_area(&a.1.exterior)
+                .abs()
+                .total_cmp(&polysweep::ring_area(&b.1.exterior).abs())
+        });
+        let host = host.map(|(i, _)| i);
+        self.edit(|operands| {
+            let polygons = &mut operands[which.index()].0;
+            match host {
+                Some(i) => polygons[i].holes.push(ring),
+                None => polygons.push(Polygon::new(ring, Vec::new())),
+            }
+        });
+    }
+
+    /// The vertex nearest to `at` within `radius`, preferring the given operand when two are equally near.
+    pub fn vertex_near(&self, at: Point, radius: f64, prefer: Operand) -> Option<VertexId> {
+        let mut best: Option<(f64, VertexId)> = None;
+        for operand in [prefer, other(prefer)] {
+            for (p, polygon) in self.operand(operand).0.iter().enumerate() {
+                for (r, ring) in polygon.rings().enumerate() {
+                    for (v, q) in ring.iter().enumerate() {
+                        let d = (q.x - at.x).hypot(q.y - at.y);
+                        if d <= radius && best.is_none_or(|(b, _)| d < b) {
+                            best = Some((
+                                d,
+                                VertexId {
+                                    operand,
+                                    polygon: p,
+                                    ring: r,
+                                    vertex: v,
+                                },
+                            ));
+                        }
+                    }
+                }
+            }
+        }
+        best.map(|(_, id)| id)
+    }
+}
+
+pub fn other(operand: Operand) -> Operand {
+    match operand {
+        Operand::Subject => Operand::Clipping,
+        Operand::Clipping => Operand::Subject,
+    }
+}
+
+fn ring_mut(m: &mut MultiPolygon, id: VertexId) -> Option<&mut Ring> {
+    let polygon = m.0.get_mut(id.polygon)?;
+    match id.ring {
+        0 => Some(&mut polygon.exterior),
+        r => polygon.holes.get_mut(r - 1),
+    }
+}
+
+/// Drops the repeated closing point of every ring, so each vertex is one handle.
+fn open_rings(mut m: MultiPolygon) -> MultiPolygon {
+    for polygon in &mut m.0 {
+        for ring in std::iter::once(&mut polygon.exterior).chain(&mut polygon.holes) {
+            if ring.len() > 1 && ring.first() == ring.last() {
+                ring.pop();
+            }
+        }
+    }
+    m
+}
+
+/// Even-odd point-in-ring test by ray casting; used only to decide where a drawn ring goes.
+fn contains(ring: &[Point], p: Point) -> bool {
+    let mut inside = false;
+    for (i, a) in ring.iter().enumerate() {
+        let b = ring[(i + 1) % ring.len()];
+        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) {
+            inside = !inside;
+        }
+    }
+    inside
+}
