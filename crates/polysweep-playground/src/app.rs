@@ -15,6 +15,7 @@ use crate::scene::{Operand, Scene, VertexId};
 use crate::view::View;
 use eframe::egui::{self, Color32, Key, Mesh, Modifiers, Pos2, Rect, Sense, Shape, Stroke};
 use polysweep::{geojson, Error, FillRule, MultiPolygon, Point};
+use web_time::Instant;
 
 /// Fill colours; the result is opaque so that it reads (and tests) the same over any operand.
 pub const RESULT_FILL: Color32 = Color32::from_rgb(250, 190, 40);
@@ -31,6 +32,8 @@ const BACKGROUND: Color32 = Color32::from_rgb(18, 20, 24);
 
 /// Vertex handles are drawn (and grabbed) within this many screen points.
 const HANDLE_RADIUS: f32 = 7.0;
+/// A computation slower than this (in milliseconds) is not repeated on every move of a drag.
+const FRAME_BUDGET_MS: f64 = 12.0;
 /// Above this many vertices an operand's handles are not drawn: they would cover the picture.
 const MAX_HANDLES: usize = 5000;
 
@@ -51,6 +54,9 @@ struct Derived {
     result_inputs: Option<(MultiPolygon, MultiPolygon, Op, FillRule)>,
     outcome: Option<Result<Outcome, Error>>,
     result_fill: Fill,
+    /// How long the last computation of each took (sweep and triangulation), to decide what can run mid-drag.
+    region_milliseconds: [f64; 2],
+    result_milliseconds: f64,
 }
 
 pub struct Playground {
@@ -143,37 +149,65 @@ impl Playground {
 
     /// The result of the current operation, computing it if the operands, operation or fill rule changed.
     pub fn outcome(&mut self) -> &Result<Outcome, Error> {
+        self.refresh(true);
+        self.derived.outcome.as_ref().expect("refreshed above")
+    }
+
+    /// Brings the fills and the result up to date with the operands. With `allow_slow` false (mid-drag), whatever
+    /// took longer than a frame last time is left as it is, so that dragging stays smooth on large data; the canvas
+    /// refreshes it when the pointer rests or is released. Returns whether everything is up to date.
+    fn refresh(&mut self, allow_slow: bool) -> bool {
+        let timed = |work: &mut dyn FnMut()| {
+            let start = Instant::now();
+            work();
+            start.elapsed().as_secs_f64() * 1e3
+        };
+        let mut up_to_date = true;
+        for which in [Operand::Subject, Operand::Clipping] {
+            let i = which.index();
+            let operand = self.scene.operand(which);
+            if matches!(&self.derived.region_inputs[i], Some((m, rule)) if m == operand && *rule == self.fill_rule)
+            {
+                continue;
+            }
+            if !allow_slow && self.derived.region_milliseconds[i] > FRAME_BUDGET_MS {
+                up_to_date = false;
+                continue;
+            }
+            let (scene, fill_rule, derived) = (&self.scene, self.fill_rule, &mut self.derived);
+            derived.region_milliseconds[i] = timed(&mut || {
+                let region = operation::region(scene, which, fill_rule).unwrap_or_default();
+                derived.region_fills[i] = Fill::of(&region);
+            });
+            derived.region_inputs[i] = Some((operand.clone(), fill_rule));
+        }
         let (p, q) = (
             self.scene.operand(Operand::Subject),
             self.scene.operand(Operand::Clipping),
         );
         let fresh = matches!(&self.derived.result_inputs,
             Some((p0, q0, op, rule)) if p0 == p && q0 == q && *op == self.operation && *rule == self.fill_rule);
+        if !fresh && !allow_slow && self.derived.result_milliseconds > FRAME_BUDGET_MS {
+            return false;
+        }
         if !fresh {
-            let outcome = operation::run(self.operation, &self.scene, self.fill_rule);
-            self.derived.result_fill = outcome
-                .as_ref()
-                .map(|o| Fill::of(&o.result))
-                .unwrap_or_default();
-            self.derived.outcome = Some(outcome);
-            self.derived.result_inputs =
-                Some((p.clone(), q.clone(), self.operation, self.fill_rule));
+            let (scene, operation, fill_rule, derived) = (
+                &self.scene,
+                self.operation,
+                self.fill_rule,
+                &mut self.derived,
+            );
+            derived.result_milliseconds = timed(&mut || {
+                let outcome = operation::run(operation, scene, fill_rule);
+                derived.result_fill = outcome
+                    .as_ref()
+                    .map(|o| Fill::of(&o.result))
+                    .unwrap_or_default();
+                derived.outcome = Some(outcome);
+            });
+            derived.result_inputs = Some((p.clone(), q.clone(), operation, fill_rule));
         }
-        self.derived.outcome.as_ref().expect("computed above")
-    }
-
-    fn refresh_region_fills(&mut self) {
-        for which in [Operand::Subject, Operand::Clipping] {
-            let i = which.index();
-            let operand = self.scene.operand(which);
-            if !matches!(&self.derived.region_inputs[i], Some((m, rule)) if m == operand && *rule == self.fill_rule)
-            {
-                let region =
-                    operation::region(&self.scene, which, self.fill_rule).unwrap_or_default();
-                self.derived.region_fills[i] = Fill::of(&region);
-                self.derived.region_inputs[i] = Some((operand.clone(), self.fill_rule));
-            }
-        }
+        up_to_date
     }
 
     /// Loads GeoJSON text into the active operand.
@@ -434,44 +468,42 @@ impl Playground {
     fn figures(&mut self, ui: &mut egui::Ui) {
         let vertices =
             [Operand::Subject, Operand::Clipping].map(|w| self.scene.operand(w).vertex_count());
-        let triangles = self.derived.result_fill.triangle_count();
-        let outcome = self.outcome();
+        let mut rows = vec![(
+            "vertices in P / Q",
+            format!("{} / {}", vertices[0], vertices[1]),
+        )];
+        match &self.derived.outcome {
+            Some(Ok(o)) => rows.extend([
+                ("vertices out", o.result.vertex_count().to_string()),
+                ("polygons out", o.result.0.len().to_string()),
+                ("edge intersections", o.crossings.to_string()),
+                ("result area", format!("{:.6}", o.result.area())),
+                ("operation time", format!("{:.2} ms", o.milliseconds)),
+                (
+                    "fill triangles",
+                    self.derived.result_fill.triangle_count().to_string(),
+                ),
+            ]),
+            Some(Err(e)) => rows.push(("error", e.to_string())),
+            None => {}
+        }
+        rows.push((
+            "last frame",
+            format!("{:.1} ms", ui.input(|i| i.unstable_dt) * 1e3),
+        ));
         egui::Grid::new("figures")
             .num_columns(2)
             .striped(true)
             .show(ui, |ui| {
-                ui.label("vertices in P / Q");
-                ui.label(format!("{} / {}", vertices[0], vertices[1]));
-                ui.end_row();
-                match outcome {
-                    Ok(o) => {
-                        ui.label("vertices out");
-                        ui.label(o.result.vertex_count().to_string());
-                        ui.end_row();
-                        ui.label("polygons out");
-                        ui.label(o.result.0.len().to_string());
-                        ui.end_row();
-                        ui.label("edge intersections");
-                        ui.label(o.crossings.to_string());
-                        ui.end_row();
-                        ui.label("result area");
-                        ui.label(format!("{:.6}", o.result.area()));
-                        ui.end_row();
-                        ui.label("time");
-                        ui.label(format!("{:.2} ms", o.milliseconds));
-                        ui.end_row();
-                        ui.label("fill triangles");
-                        ui.label(triangles.to_string());
-                        ui.end_row();
-                    }
-                    Err(e) => {
-                        ui.label("error");
-                        ui.label(
-                            egui::RichText::new(e.to_string())
-                                .color(Color32::from_rgb(255, 120, 110)),
-                        );
-                        ui.end_row();
-                    }
+                for (name, value) in rows {
+                    ui.label(name);
+                    let value = egui::RichText::new(value);
+                    ui.label(if name == "error" {
+                        value.color(Color32::from_rgb(255, 120, 110))
+                    } else {
+                        value
+                    });
+                    ui.end_row();
                 }
             });
     }
@@ -538,8 +570,17 @@ impl Playground {
             }
         }
         self.interact(ui, &response);
-        self.refresh_region_fills();
-        let error_at = self.outcome().as_ref().err().map(Error::location);
+        let settled =
+            self.drag.is_none() || ui.input(|i| i.pointer.time_since_last_movement() > 0.15);
+        let up_to_date = self.refresh(settled);
+        if !up_to_date {
+            ui.ctx()
+                .request_repaint_after(std::time::Duration::from_millis(160));
+        }
+        let error_at = match &self.derived.outcome {
+            Some(Err(e)) => Some(e.location()),
+            _ => None,
+        };
         let error_vertex = error_at.and_then(|at| VertexId::from_location(&self.scene, &at));
         let view = self.view;
         let to_screen = |p: Point| view.to_screen(canvas, p);
@@ -593,6 +634,16 @@ impl Playground {
         }
         if let Some(p) = error_vertex.and_then(|id| self.scene.point(id)) {
             painter.circle_stroke(to_screen(p), 10.0, Stroke::new(3.0, Color32::RED));
+        }
+        if !up_to_date {
+            let text = "large data: the result follows when the pointer rests";
+            painter.text(
+                canvas.left_top() + egui::vec2(8.0, 6.0),
+                egui::Align2::LEFT_TOP,
+                text,
+                egui::FontId::proportional(13.0),
+                Color32::LIGHT_GRAY,
+            );
         }
         if let Some(p) = pointer_world {
             let text = format!("{:.6}, {:.6}", p.x, p.y);
