@@ -57,7 +57,10 @@ impl VertexId {
     }
 }
 
+/// Undo steps kept: at most this many, and only as many as fit in [`HISTORY_VERTICES`], so that a history of edits
+/// on large data (the 59,212-vertex land) cannot exhaust the browser's memory.
 const UNDO_DEPTH: usize = 200;
+const HISTORY_VERTICES: usize = 4_000_000;
 
 /// The two operands and their history.
 #[derive(Clone, Debug, Default)]
@@ -80,10 +83,13 @@ impl Scene {
 
     /// Records the current state for undo; a drag calls this once, then [`Scene::move_vertex`] on every move.
     pub fn checkpoint(&mut self) {
-        if self.undo.len() == UNDO_DEPTH {
+        self.undo.push(self.operands.clone());
+        let size = |step: &[MultiPolygon; 2]| step[0].vertex_count() + step[1].vertex_count();
+        while self.undo.len() > 1
+            && (self.undo.len() > UNDO_DEPTH || self.undo.iter().map(size).sum::<usize>() > HISTORY_VERTICES)
+        {
             self.undo.remove(0);
         }
-        self.undo.push(self.operands.clone());
         self.redo.clear();
     }
 

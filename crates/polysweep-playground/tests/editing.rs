@@ -303,3 +303,19 @@ fn the_mouse_draws_and_the_keys_switch_operations() {
         assert_eq!(result_area(&mut app), area);
     }
 }
+
+#[test]
+fn history_on_large_data_is_bounded_by_its_size() {
+    let mut app = Playground::default();
+    app.load_preset(Preset::Table1 { squares: 8 });
+    let step_vertices = 59_212 + 8 * 4;
+    for _ in 0..100 {
+        app.scene.checkpoint();
+    }
+    let mut undos = 0;
+    while app.scene.can_undo() {
+        app.scene.undo();
+        undos += 1;
+    }
+    assert_eq!(undos, 4_000_000 / step_vertices, "as many steps as fit in 4 million vertices");
+}
