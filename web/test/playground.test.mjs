@@ -1,7 +1,7 @@
 // The playground (index.html, built by web/build-playground.sh) in headless Chromium: it starts without console
 // errors, two squares are drawn with the mouse, each operation is chosen with its key, and the screenshot must be
 // filled with the result colour exactly where that operation's result is and nowhere else; a vertex drag and undo
-// update it.
+// update it; pasted GeoJSON loads, and a bad coordinate shows an error without breaking the app.
 //
 // Expectations are independent of the app: which of four probe points lies in each result follows from the two
 // squares by hand. The probes sit mid-region, away from edges, so antialiasing cannot touch them.
@@ -17,10 +17,17 @@ const VIEWPORT = { width: 1200, height: 800 };
 /** Layout of the app's first frame (app.rs, view.rs): a 280-point side panel; the canvas shows (5, 5) at its centre
  *  at 30 points per unit, y up, with grid snapping to whole units on. */
 const PANEL = 280;
-const screen = ([x, y]) => ({
-  x: PANEL + (VIEWPORT.width - PANEL) / 2 + (x - 5) * 30,
-  y: VIEWPORT.height / 2 - (y - 5) * 30,
+const CANVAS = { width: VIEWPORT.width - PANEL, height: VIEWPORT.height };
+/** World → page coordinates for a view centred on `center` at `scale` points per unit. */
+const viewOf = (center, scale) => ([x, y]) => ({
+  x: PANEL + CANVAS.width / 2 + (x - center[0]) * scale,
+  y: CANVAS.height / 2 - (y - center[1]) * scale,
 });
+const screen = viewOf([5, 5], 30);
+/** The view after loading data (and after F): the data's box, centred, filling 90% of the canvas (view.rs). */
+const fitted = ([x0, y0], [x1, y1]) =>
+  viewOf([(x0 + x1) / 2, (y0 + y1) / 2], 0.9 * Math.min(CANVAS.width / (x1 - x0), CANVAS.height / (y1 - y0)));
+const ERROR_TEXT = [255, 64, 64]; // app.rs ERROR_TEXT: errors in the side panel
 const RESULT_FILL = [250, 190, 40]; // app.rs RESULT_FILL
 
 const SUBJECT = [[0, 0], [4, 0], [4, 4], [0, 4]];
@@ -52,23 +59,43 @@ after(async () => {
   await new Promise((resolve) => (server ? server.close(resolve) : resolve()));
 });
 
-const isResultColour = ([r, g, b]) =>
-  Math.abs(r - RESULT_FILL[0]) <= 12 && Math.abs(g - RESULT_FILL[1]) <= 12 && Math.abs(b - RESULT_FILL[2]) <= 12;
+const near = (colour, [r, g, b], tolerance) =>
+  Math.abs(colour[0] - r) <= tolerance && Math.abs(colour[1] - g) <= tolerance && Math.abs(colour[2] - b) <= tolerance;
+const isResultColour = (colour) => near(colour, RESULT_FILL, 12);
 
-async function pixelsAt(page, points) {
+async function screenshot(page) {
   const png = PNG.sync.read(await page.screenshot());
-  return points.map(({ x, y }) => {
+  const at = (x, y) => {
     const i = (Math.round(y) * png.width + Math.round(x)) * 4;
     return [png.data[i], png.data[i + 1], png.data[i + 2]];
-  });
+  };
+  /** How many pixels of the box [x0, x1) × [y0, y1) are within `tolerance` of `colour`. */
+  const count = (x0, y0, x1, y1, colour, tolerance) => {
+    let n = 0;
+    for (let y = y0; y < y1; y++) for (let x = x0; x < x1; x++) n += near(at(x, y), colour, tolerance) ? 1 : 0;
+    return n;
+  };
+  return { at, count };
 }
 
-/** Polls the screenshot until the probes show `filled` (egui repaints on input, a frame or two later). */
-async function expectFill(page, filled, label) {
+/** Polls the screenshot until `check` holds (egui repaints on input, a frame or two later); fails with `describe`. */
+async function expectScreen(page, check, describe) {
+  let shot;
+  for (let attempt = 0; attempt < 40; attempt++) {
+    shot = await screenshot(page);
+    if (check(shot)) return;
+    await page.waitForTimeout(250);
+  }
+  assert.fail(describe(shot));
+}
+
+/** Expects the result colour at exactly the probes named in `filled`, in `view`. */
+async function expectFill(page, filled, label, view = screen) {
   const names = Object.keys(PROBES);
   let seen;
   for (let attempt = 0; attempt < 40; attempt++) {
-    const colours = await pixelsAt(page, names.map((n) => screen(PROBES[n])));
+    const shot = await screenshot(page);
+    const colours = names.map((n) => view(PROBES[n])).map(({ x, y }) => shot.at(x, y));
     seen = Object.fromEntries(names.map((n, i) => [n, colours[i]]));
     if (names.every((n) => isResultColour(seen[n]) === filled.includes(n))) return;
     await page.waitForTimeout(250);
@@ -126,6 +153,34 @@ test('the playground draws two squares with the mouse and fills each operation c
     await expectFill(page, ['both', 'onlyP', 'onlyQ'], 'union after undoing the drag');
     await page.keyboard.press('Control+KeyZ');
     await expectFill(page, ['both', 'onlyP'], 'union after undoing Q');
+
+    // GeoJSON pasted (Ctrl+V reaches the app as the document's paste event) replaces Q and fits the view to the
+    // data, here the box (0, 0)–(9, 4).
+    const paste = (text) =>
+      page.evaluate((t) => {
+        const data = new DataTransfer();
+        data.setData('text', t);
+        document.dispatchEvent(new ClipboardEvent('paste', { clipboardData: data, bubbles: true }));
+      }, text);
+    const panelErrorPixels = (shot) => shot.count(0, 0, PANEL - 10, VIEWPORT.height, ERROR_TEXT, 20);
+    await page.keyboard.press('KeyQ');
+    await paste(JSON.stringify({ type: 'Polygon', coordinates: [[[7, 0], [9, 0], [9, 2], [7, 2], [7, 0]]] }));
+    const afterPaste = fitted([0, 0], [9, 4]);
+    await expectFill(page, ['both', 'onlyP', 'neither'], 'union with the pasted Q', afterPaste);
+    assert.equal(panelErrorPixels(await screenshot(page)), 0, 'no error is shown yet');
+
+    // A coordinate beyond the core's range: the error is shown in the panel (in red), there is no result, nothing
+    // crashes; undo and F (fit) bring the previous Q and the union back.
+    await paste(JSON.stringify({ type: 'Polygon', coordinates: [[[7, 0], [1e300, 0], [9, 2], [7, 0]]] }));
+    await expectScreen(
+      page,
+      (shot) => panelErrorPixels(shot) > 20 && shot.count(PANEL, 0, VIEWPORT.width, VIEWPORT.height, RESULT_FILL, 12) === 0,
+      (shot) => `expected the error in the panel and no result: ${panelErrorPixels(shot)} red pixels`,
+    );
+    await page.keyboard.press('Control+KeyZ');
+    await page.keyboard.press('KeyF');
+    await expectFill(page, ['both', 'onlyP', 'neither'], 'union after undoing the bad paste', afterPaste);
+    assert.equal(panelErrorPixels(await screenshot(page)), 0, 'the error is gone');
     assert.equal(await page.evaluate(() => window.playgroundFailure), undefined);
     assert.deepEqual(problems, [], `the page reported errors:\n${problems.join('\n')}`);
   } finally {

@@ -28,6 +28,8 @@ const OPERAND_EDGE: [Color32; 2] = [
     Color32::from_rgb(90, 150, 255),
     Color32::from_rgb(255, 110, 90),
 ];
+/// Errors in the side panel: red, and far enough from Q's salmon that a test can tell them apart.
+pub const ERROR_TEXT: Color32 = Color32::from_rgb(255, 64, 64);
 const BACKGROUND: Color32 = Color32::from_rgb(18, 20, 24);
 
 /// Vertex handles are drawn (and grabbed) within this many screen points.
@@ -407,7 +409,7 @@ impl Playground {
         if let Some((message, is_error)) = &self.status {
             ui.separator();
             let color = if *is_error {
-                Color32::from_rgb(255, 120, 110)
+                ERROR_TEXT
             } else {
                 ui.visuals().text_color()
             };
@@ -499,7 +501,7 @@ impl Playground {
                     ui.label(name);
                     let value = egui::RichText::new(value);
                     ui.label(if name == "error" {
-                        value.color(Color32::from_rgb(255, 120, 110))
+                        value.color(ERROR_TEXT)
                     } else {
                         value
                     });

@@ -86,7 +86,8 @@ impl Scene {
         self.undo.push(self.operands.clone());
         let size = |step: &[MultiPolygon; 2]| step[0].vertex_count() + step[1].vertex_count();
         while self.undo.len() > 1
-            && (self.undo.len() > UNDO_DEPTH || self.undo.iter().map(size).sum::<usize>() > HISTORY_VERTICES)
+            && (self.undo.len() > UNDO_DEPTH
+                || self.undo.iter().map(size).sum::<usize>() > HISTORY_VERTICES)
         {
             self.undo.remove(0);
         }

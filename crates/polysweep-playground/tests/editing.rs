@@ -317,5 +317,9 @@ fn history_on_large_data_is_bounded_by_its_size() {
         app.scene.undo();
         undos += 1;
     }
-    assert_eq!(undos, 4_000_000 / step_vertices, "as many steps as fit in 4 million vertices");
+    assert_eq!(
+        undos,
+        4_000_000 / step_vertices,
+        "as many steps as fit in 4 million vertices"
+    );
 }
