@@ -42,7 +42,8 @@ const MAX_HANDLES: usize = 5000;
 /// What a drag on the canvas is doing.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Drag {
-    Vertex(VertexId),
+    /// Moving a vertex, since the scene's generation given (an undo, delete or load meanwhile ends the drag).
+    Vertex(VertexId, u64),
     Pan,
 }
 
@@ -623,7 +624,7 @@ impl Playground {
         let pointer_world = response.hover_pos().map(|p| self.view.to_world(canvas, p));
         let hovered = pointer_world.and_then(|p| self.vertex_under(p));
         if let Some(id) = hovered.or(match self.drag {
-            Some(Drag::Vertex(id)) => Some(id),
+            Some(Drag::Vertex(id, _)) => Some(id),
             _ => None,
         }) {
             if let Some(p) = self.scene.point(id) {
@@ -688,14 +689,17 @@ impl Playground {
             self.drag = match on_vertex {
                 Some(id) if response.drag_started_by(egui::PointerButton::Primary) => {
                     self.scene.checkpoint();
-                    Some(Drag::Vertex(id))
+                    Some(Drag::Vertex(id, self.scene.generation()))
                 }
                 _ => Some(Drag::Pan),
             };
         }
         if response.dragged() {
             match (self.drag, response.interact_pointer_pos()) {
-                (Some(Drag::Vertex(id)), Some(pos)) => {
+                (Some(Drag::Vertex(_, generation)), _) if generation != self.scene.generation() => {
+                    self.drag = None;
+                }
+                (Some(Drag::Vertex(id, _)), Some(pos)) => {
                     let at = self.view.to_world(canvas, pos);
                     self.scene
                         .move_vertex(id, if self.snap { self.view.snap(at) } else { at });
@@ -711,8 +715,7 @@ impl Playground {
         let Some(pointer) = pointer else { return };
         let at = self.view.to_world(canvas, pointer);
         if response.double_clicked() {
-            // The double-click's second click already added a vertex where the first one did.
-            self.drawing.pop();
+            // The double-click's first click added its vertex; the second closes the ring.
             self.close_ring();
         } else if response.clicked() {
             self.click(at, grab);
@@ -724,7 +727,9 @@ impl Playground {
                 }
             }
         }
-        if response.hovered() && ui.input(|i| i.key_pressed(Key::Delete)) {
+        let delete =
+            !ui.ctx().egui_wants_keyboard_input() && ui.input(|i| i.key_pressed(Key::Delete));
+        if response.hovered() && self.drag.is_none() && delete {
             if let Some(id) = self.vertex_under(at) {
                 self.scene.delete_vertex(id);
             }
@@ -732,23 +737,18 @@ impl Playground {
     }
 
     fn paint_grid(&self, painter: &egui::Painter, canvas: Rect) {
-        let step = self.view.grid_step();
         let (lo, hi) = (
             self.view.to_world(canvas, canvas.left_bottom()),
             self.view.to_world(canvas, canvas.right_top()),
         );
         let stroke = Stroke::new(1.0, Color32::from_gray(38));
-        let mut x = (lo.x / step).floor() * step;
-        while x <= hi.x {
+        for x in self.view.grid_lines(lo.x, hi.x, 500) {
             let sx = self.view.to_screen(canvas, Point::new(x, 0.0)).x;
             painter.vline(sx, canvas.y_range(), stroke);
-            x += step;
         }
-        let mut y = (lo.y / step).floor() * step;
-        while y <= hi.y {
+        for y in self.view.grid_lines(lo.y, hi.y, 500) {
             let sy = self.view.to_screen(canvas, Point::new(0.0, y)).y;
             painter.hline(canvas.x_range(), sy, stroke);
-            y += step;
         }
     }
 

@@ -30,12 +30,8 @@ impl Fill {
                 if r > 0 {
                     holes.push(data.len() as u32);
                 }
-                let open = if ring.len() > 1 && ring.first() == ring.last() {
-                    &ring[..ring.len() - 1]
-                } else {
-                    ring
-                };
-                data.extend(open.iter().map(|p| [p.x, p.y]));
+                // Closed or open alike: earcut drops a repeated closing point itself.
+                data.extend(ring.iter().map(|p| [p.x, p.y]));
             }
             earcut.earcut(data.iter().copied(), &holes, &mut triangles);
             let base = fill.points.len() as u32;

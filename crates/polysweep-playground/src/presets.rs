@@ -3,7 +3,6 @@
 //! tests/data/README.md for provenance).
 
 use polysweep::{geojson, MultiPolygon};
-use std::io::Read;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Preset {
@@ -75,10 +74,7 @@ fn fixture(text: &str) -> (MultiPolygon, MultiPolygon) {
 }
 
 fn gzipped(bytes: &[u8]) -> MultiPolygon {
-    let mut text = String::new();
-    flate2::read::GzDecoder::new(bytes)
-        .read_to_string(&mut text)
-        .expect("the Table 1 data is gzipped text");
+    let text = crate::io::text_of(bytes).expect("the Table 1 data is gzipped text");
     geojson::parse(&text).expect("the Table 1 data is GeoJSON")
 }
 

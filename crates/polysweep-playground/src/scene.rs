@@ -68,6 +68,8 @@ pub struct Scene {
     operands: [MultiPolygon; 2],
     undo: Vec<[MultiPolygon; 2]>,
     redo: Vec<[MultiPolygon; 2]>,
+    /// Counts undo steps recorded, undone and redone: a vertex id taken before a change may no longer be valid.
+    generation: u64,
 }
 
 impl Scene {
@@ -92,6 +94,12 @@ impl Scene {
             self.undo.remove(0);
         }
         self.redo.clear();
+        self.generation += 1;
+    }
+
+    /// Changes whenever the history does; see the field.
+    pub fn generation(&self) -> u64 {
+        self.generation
     }
 
     /// Replaces one operand, e.g. with a loaded file.
@@ -116,12 +124,14 @@ impl Scene {
         if let Some(previous) = self.undo.pop() {
             self.redo
                 .push(std::mem::replace(&mut self.operands, previous));
+            self.generation += 1;
         }
     }
 
     pub fn redo(&mut self) {
         if let Some(next) = self.redo.pop() {
             self.undo.push(std::mem::replace(&mut self.operands, next));
+            self.generation += 1;
         }
     }
 
@@ -169,28 +179,31 @@ impl Scene {
     }
 
     /// Adds a closed ring drawn by the user to an operand, as one undo step. A ring that starts inside an exterior
-    /// ring of that operand becomes a hole of it (the innermost such polygon); any other ring starts a new polygon.
-    /// Under the even-odd rule both read the same; the distinction shapes the saved GeoJSON and the non-zero rule.
-    pub fn add_ring(&mut self, which: Operand, ring: Ring) {
+    /// ring of that operand becomes a hole of it (the innermost such polygon), turned to run against its shell so
+    /// that it is a hole under the non-zero rule too; any other ring starts a new polygon, as drawn.
+    pub fn add_ring(&mut self, which: Operand, mut ring: Ring) {
         if ring.len() < 3 {
             return;
         }
-        let host = self
-            .operand(which)
-            .0
-            .iter()
-            .enumerate()
-            .filter(|(_, p)| contains(&p.exterior, ring[0]));
-        let host = host.min_by(|a, b| {
-            polysweep::ring_area(&a.1.exterior)
-                .abs()
-                .total_cmp(&polysweep::ring_area(&b.1.exterior).abs())
-        });
-        let host = host.map(|(i, _)| i);
+        let area = |r: &Ring| polysweep::ring_area(r);
+        let hosts = self.operand(which).0.iter().enumerate();
+        let host = hosts
+            .filter(|(_, p)| contains(&p.exterior, ring[0]))
+            .min_by(|a, b| {
+                area(&a.1.exterior)
+                    .abs()
+                    .total_cmp(&area(&b.1.exterior).abs())
+            })
+            .map(|(i, p)| (i, area(&p.exterior)));
+        if let Some((_, shell_area)) = host {
+            if shell_area * area(&ring) > 0.0 {
+                ring.reverse();
+            }
+        }
         self.edit(|operands| {
             let polygons = &mut operands[which.index()].0;
             match host {
-                Some(i) => polygons[i].holes.push(ring),
+                Some((i, _)) => polygons[i].holes.push(ring),
                 None => polygons.push(Polygon::new(ring, Vec::new())),
             }
         });

@@ -7,6 +7,10 @@
 use eframe::egui::{Pos2, Rect, Vec2};
 use polysweep::Point;
 
+/// Zoom limits, in screen points per world unit.
+const MIN_SCALE: f64 = 1e-12;
+const MAX_SCALE: f64 = 1e12;
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct View {
     /// The world point at the centre of the canvas.
@@ -50,7 +54,7 @@ impl View {
     /// Zooms by `factor`, keeping the world point under `pointer` where it is.
     pub fn zoom_at(&mut self, canvas: Rect, pointer: Pos2, factor: f64) {
         let anchor = self.to_world(canvas, pointer);
-        self.scale = (self.scale * factor).clamp(1e-12, 1e12);
+        self.scale = (self.scale * factor).clamp(MIN_SCALE, MAX_SCALE);
         let moved = self.to_world(canvas, pointer);
         self.center.x += anchor.x - moved.x;
         self.center.y += anchor.y - moved.y;
@@ -60,7 +64,8 @@ impl View {
     pub fn fit(&mut self, canvas: Rect, min: Point, max: Point) {
         let (w, h) = ((max.x - min.x).max(1e-9), (max.y - min.y).max(1e-9));
         self.center = Point::new((min.x + max.x) / 2.0, (min.y + max.y) / 2.0);
-        self.scale = 0.9 * (f64::from(canvas.width()) / w).min(f64::from(canvas.height()) / h);
+        let scale = 0.9 * (f64::from(canvas.width()) / w).min(f64::from(canvas.height()) / h);
+        self.scale = scale.clamp(MIN_SCALE, MAX_SCALE);
     }
 
     /// World spacing of the grid: 1, 2 or 5 times a power of ten, at least 24 screen points apart.
@@ -72,6 +77,16 @@ impl View {
             .map(|m| m * decade)
             .find(|s| *s >= min_step)
             .unwrap_or(10.0 * decade)
+    }
+
+    /// The world coordinates of the grid lines between `lo` and `hi` along one axis: at most `max` of them, and
+    /// computed as multiples of the step, not by adding it up, which stalls once the step is below an ulp of the
+    /// coordinate (deep zoom into projected data).
+    pub fn grid_lines(&self, lo: f64, hi: f64, max: usize) -> impl Iterator<Item = f64> {
+        let step = self.grid_step();
+        let first = (lo / step).floor();
+        let count = ((hi / step).ceil() - first).clamp(0.0, max as f64) as usize;
+        (0..=count).map(move |k| (first + k as f64) * step)
     }
 
     /// `p` moved to the nearest grid point.
@@ -137,6 +152,20 @@ mod tests {
             0.5
         );
         assert_eq!(view.snap(Point::new(2.4, -3.6)), Point::new(2.0, -4.0));
+        assert_eq!(
+            view.grid_lines(-1.5, 1.5, 100).collect::<Vec<_>>(),
+            [-2.0, -1.0, 0.0, 1.0, 2.0]
+        );
+    }
+
+    #[test]
+    fn grid_lines_end_at_deep_zoom_far_from_the_origin() {
+        let view = View {
+            center: Point::new(6e5, 5e6),
+            scale: 1e12,
+        };
+        let lines: Vec<f64> = view.grid_lines(6e5, 6e5 + 1e-9, 500).collect();
+        assert!(!lines.is_empty() && lines.len() <= 501);
     }
 
     #[test]

@@ -96,6 +96,14 @@ fn undo_and_redo_walk_the_history() {
         "one undo reverts the whole drag"
     );
     assert!(app.scene.can_redo());
+    let generation = app.scene.generation();
+    app.scene.redo();
+    assert_ne!(
+        app.scene.generation(),
+        generation,
+        "a drag in progress can tell its vertex ids are stale"
+    );
+    app.scene.undo();
 }
 
 #[test]
@@ -113,6 +121,9 @@ fn deleting_vertices_shrinks_then_removes_rings() {
     );
     let region = operation::region(&app.scene, Operand::Subject, FillRule::EvenOdd).unwrap();
     assert_eq!(region.area(), 16.0 - 2.0);
+    // Drawn counter-clockwise like its shell, the hole was turned around: it is a hole under non-zero too.
+    let non_zero = operation::region(&app.scene, Operand::Subject, FillRule::NonZero).unwrap();
+    assert_eq!(non_zero.area(), 16.0 - 2.0);
 
     let vertex = |ring, vertex| vertex_of(Operand::Subject, ring, vertex);
     app.scene.delete_vertex(vertex(0, 3));

@@ -29,9 +29,17 @@ pub fn parse(text: &str) -> Result<MultiPolygon, GeoJsonError> {
     Ok(MultiPolygon(polygons))
 }
 
-/// A MultiPolygon geometry with closed rings.
+/// A MultiPolygon geometry, with every ring closed as RFC 7946 requires (open rings are closed here).
 pub fn to_geometry(m: &MultiPolygon) -> Value {
-    json!({ "type": "MultiPolygon", "coordinates": m.to_coordinates() })
+    let mut coordinates = m.to_coordinates();
+    for ring in coordinates.iter_mut().flatten() {
+        if let (Some(&first), Some(&last)) = (ring.first(), ring.last()) {
+            if first != last {
+                ring.push(first);
+            }
+        }
+    }
+    json!({ "type": "MultiPolygon", "coordinates": coordinates })
 }
 
 fn collect(value: &Value, path: &str, out: &mut Vec<Polygon>) -> Result<(), GeoJsonError> {
@@ -109,6 +117,15 @@ mod tests {
         assert_eq!(m.0[2].holes.len(), 1);
         assert_eq!(m.0[0].exterior[1], [2.0, 0.0].into());
         assert_eq!(parse(&to_geometry(&m).to_string()).unwrap(), m);
+    }
+
+    #[test]
+    fn writes_open_rings_closed() {
+        let open =
+            MultiPolygon::from_coordinates(&[vec![vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]]]);
+        let ring = &to_geometry(&open)["coordinates"][0][0];
+        assert_eq!(ring.as_array().unwrap().len(), 4);
+        assert_eq!(ring[0], ring[3]);
     }
 
     #[test]

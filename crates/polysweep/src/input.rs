@@ -74,7 +74,7 @@ impl Bounds {
     }
 }
 
-/// Appends two events per edge of every ring of `polygons` whose polygon's box meets `region`. Edges of zero length
+/// Appends two events per edge of every ring of `polygons` whose polygon's box (of all its rings) meets `region`. Edges of zero length
 /// are skipped; a ring with fewer than three vertices still gives its edges, which cancel each other (§7.2).
 ///
 /// Leaving out polygons outside `region` is exact, not a heuristic: a ring's winding number is 0 outside its box, so
@@ -85,8 +85,10 @@ pub(crate) fn add_events(
     operand: Operand,
     region: &Bounds,
 ) {
-    let near =
-        |p: &&Polygon| *region == Bounds::EVERYWHERE || Bounds::of(&p.exterior).meets(region);
+    // The box of all the polygon's rings, not only its exterior: a hole may reach outside its shell.
+    let near = |p: &&Polygon| {
+        *region == Bounds::EVERYWHERE || Bounds::of(p.rings().flatten()).meets(region)
+    };
     for ring in polygons.0.iter().filter(near).flat_map(|p| p.rings()) {
         let n = open_len(ring);
         for i in 0..n {

@@ -77,7 +77,8 @@ pub struct Options {
 /// What an operation did, for display and benchmarks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Stats {
-    /// Edges of all operands (after dropping zero-length ones).
+    /// Edges swept: those of all operands, less zero-length ones and, for an intersection or a difference, those of
+    /// polygons outside the box where the result can lie.
     pub input_edges: usize,
     /// Points where two edges properly cross (constructed intersection points).
     pub crossings: usize,
