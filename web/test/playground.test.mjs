@@ -32,13 +32,14 @@ const RESULT_FILL = [250, 190, 40]; // app.rs RESULT_FILL
 
 const SUBJECT = [[0, 0], [4, 0], [4, 4], [0, 4]];
 const CLIPPING = [[2, 2], [6, 2], [6, 6], [2, 6]];
-const PROBES = { both: [3, 3], onlyP: [1, 1], onlyQ: [5, 5], neither: [8, 1] };
+// qCorner lies in Q next to its last corner (2, 6), outside the triangle Q would be without that corner.
+const PROBES = { both: [3, 3], onlyP: [1, 1], onlyQ: [5, 5], qCorner: [2.5, 5.5], neither: [8, 1] };
 const OPERATIONS = [
   { key: 'Digit1', name: 'intersection', filled: ['both'] },
-  { key: 'Digit2', name: 'union', filled: ['both', 'onlyP', 'onlyQ'] },
+  { key: 'Digit2', name: 'union', filled: ['both', 'onlyP', 'onlyQ', 'qCorner'] },
   { key: 'Digit3', name: 'P − Q', filled: ['onlyP'] },
-  { key: 'Digit4', name: 'Q − P', filled: ['onlyQ'] },
-  { key: 'Digit5', name: 'xor', filled: ['onlyP', 'onlyQ'] },
+  { key: 'Digit4', name: 'Q − P', filled: ['onlyQ', 'qCorner'] },
+  { key: 'Digit5', name: 'xor', filled: ['onlyP', 'onlyQ', 'qCorner'] },
 ];
 
 let server;
@@ -122,18 +123,19 @@ test('the playground draws two squares with the mouse and fills each operation c
     await page.waitForTimeout(500);
     await expectFill(page, [], 'before drawing');
 
-    // P: four clicks and a click on the first vertex to close it; then Q (key Q), closed with Enter. Clicks are
-    // spaced so that none pairs with the next into a double-click.
+    // P: four clicks and a click on the first vertex to close it; then Q (key Q): three clicks and a double-click
+    // on its last corner, which closes the ring with that corner in it. Clicks are spaced so that none pairs with
+    // the next into a double-click.
     for (const corner of [...SUBJECT, SUBJECT[0]]) {
       await page.mouse.click(screen(corner).x, screen(corner).y);
       await page.waitForTimeout(400);
     }
     await page.keyboard.press('KeyQ');
-    for (const corner of CLIPPING) {
+    for (const corner of CLIPPING.slice(0, 3)) {
       await page.mouse.click(screen(corner).x, screen(corner).y);
       await page.waitForTimeout(400);
     }
-    await page.keyboard.press('Enter');
+    await page.mouse.dblclick(screen(CLIPPING[3]).x, screen(CLIPPING[3]).y);
 
     for (const { key, name, filled } of OPERATIONS) {
       await page.keyboard.press(key);
@@ -148,9 +150,9 @@ test('the playground draws two squares with the mouse and fills each operation c
     await page.mouse.down();
     await page.mouse.move(to.x, to.y, { steps: 12 });
     await page.mouse.up();
-    await expectFill(page, ['both', 'onlyP', 'onlyQ', 'neither'], 'union after the drag');
+    await expectFill(page, ['both', 'onlyP', 'onlyQ', 'qCorner', 'neither'], 'union after the drag');
     await page.keyboard.press('Control+KeyZ');
-    await expectFill(page, ['both', 'onlyP', 'onlyQ'], 'union after undoing the drag');
+    await expectFill(page, ['both', 'onlyP', 'onlyQ', 'qCorner'], 'union after undoing the drag');
     await page.keyboard.press('Control+KeyZ');
     await expectFill(page, ['both', 'onlyP'], 'union after undoing Q');
 
