@@ -50,11 +50,11 @@ enum Drag {
 /// What is derived from the operands, recomputed only when its inputs change.
 #[derive(Default)]
 struct Derived {
-    /// The operands and fill rule each region fill was computed from.
-    region_inputs: [Option<(MultiPolygon, FillRule)>; 2],
+    /// The operand revision and fill rule each region fill was computed from.
+    region_inputs: [Option<(u64, FillRule)>; 2],
     region_fills: [Fill; 2],
-    /// The inputs of the result.
-    result_inputs: Option<(MultiPolygon, MultiPolygon, Op, FillRule)>,
+    /// The operand revisions, operation and fill rule the result was computed from.
+    result_inputs: Option<([u64; 2], Op, FillRule)>,
     outcome: Option<Result<Outcome, Error>>,
     result_fill: Fill,
     /// How long the last computation of each took (sweep and triangulation), to decide what can run mid-drag.
@@ -168,9 +168,8 @@ impl Playground {
         let mut up_to_date = true;
         for which in [Operand::Subject, Operand::Clipping] {
             let i = which.index();
-            let operand = self.scene.operand(which);
-            if matches!(&self.derived.region_inputs[i], Some((m, rule)) if m == operand && *rule == self.fill_rule)
-            {
+            let inputs = Some((self.scene.revision(which), self.fill_rule));
+            if self.derived.region_inputs[i] == inputs {
                 continue;
             }
             if !allow_slow && self.derived.region_milliseconds[i] > FRAME_BUDGET_MS {
@@ -182,14 +181,11 @@ impl Playground {
                 let region = operation::region(scene, which, fill_rule).unwrap_or_default();
                 derived.region_fills[i] = Fill::of(&region);
             });
-            derived.region_inputs[i] = Some((operand.clone(), fill_rule));
+            derived.region_inputs[i] = inputs;
         }
-        let (p, q) = (
-            self.scene.operand(Operand::Subject),
-            self.scene.operand(Operand::Clipping),
-        );
-        let fresh = matches!(&self.derived.result_inputs,
-            Some((p0, q0, op, rule)) if p0 == p && q0 == q && *op == self.operation && *rule == self.fill_rule);
+        let revisions = [Operand::Subject, Operand::Clipping].map(|w| self.scene.revision(w));
+        let inputs = Some((revisions, self.operation, self.fill_rule));
+        let fresh = self.derived.result_inputs == inputs;
         if !fresh && !allow_slow && self.derived.result_milliseconds > FRAME_BUDGET_MS {
             return false;
         }
@@ -208,7 +204,7 @@ impl Playground {
                     .unwrap_or_default();
                 derived.outcome = Some(outcome);
             });
-            derived.result_inputs = Some((p.clone(), q.clone(), operation, fill_rule));
+            derived.result_inputs = inputs;
         }
         up_to_date
     }

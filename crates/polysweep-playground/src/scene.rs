@@ -4,7 +4,7 @@
 //! k is hole k − 1), vertex — so an error from the core points straight at the vertex to fix. Rings are kept open
 //! (no repeated closing point) so that every vertex is one handle; the core accepts open rings.
 //!
-//! Every change goes through [`Scene::edit`], which records the state before it for undo. A vertex drag is one
+//! Every change goes through `Scene::edit`, which records the state before it for undo. A vertex drag is one
 //! step: [`Scene::checkpoint`] records it when the drag starts, and the moves change the operands in place.
 
 use polysweep::{Location, MultiPolygon, Point, Polygon, Ring};
@@ -70,6 +70,9 @@ pub struct Scene {
     redo: Vec<[MultiPolygon; 2]>,
     /// Counts undo steps recorded, undone and redone: a vertex id taken before a change may no longer be valid.
     generation: u64,
+    /// Per operand, bumped whenever it changes: what is derived from an operand (its fill, the result) is
+    /// recomputed when its revision moves, without keeping a copy of the operand to compare against.
+    revisions: [u64; 2],
 }
 
 impl Scene {
@@ -77,10 +80,29 @@ impl Scene {
         &self.operands[which.index()]
     }
 
-    /// Changes the operands as one undoable step.
-    pub fn edit(&mut self, change: impl FnOnce(&mut [MultiPolygon; 2])) {
+    /// Changes whenever the operand does.
+    pub fn revision(&self, which: Operand) -> u64 {
+        self.revisions[which.index()]
+    }
+
+    /// Changes the `touched` operands as one undoable step.
+    fn edit(&mut self, touched: &[Operand], change: impl FnOnce(&mut [MultiPolygon; 2])) {
         self.checkpoint();
         change(&mut self.operands);
+        for which in touched {
+            self.revisions[which.index()] += 1;
+        }
+    }
+
+    /// Swaps in a state from the history, bumping the revision of each operand it changes.
+    fn restore(&mut self, state: [MultiPolygon; 2]) -> [MultiPolygon; 2] {
+        for i in 0..2 {
+            if state[i] != self.operands[i] {
+                self.revisions[i] += 1;
+            }
+        }
+        self.generation += 1;
+        std::mem::replace(&mut self.operands, state)
     }
 
     /// Records the current state for undo; a drag calls this once, then [`Scene::move_vertex`] on every move.
@@ -104,12 +126,16 @@ impl Scene {
 
     /// Replaces one operand, e.g. with a loaded file.
     pub fn replace(&mut self, which: Operand, polygons: MultiPolygon) {
-        self.edit(|operands| operands[which.index()] = open_rings(polygons));
+        self.edit(&[which], |operands| {
+            operands[which.index()] = open_rings(polygons)
+        });
     }
 
     /// Replaces both operands (a preset) as one step.
     pub fn replace_both(&mut self, subject: MultiPolygon, clipping: MultiPolygon) {
-        self.edit(|operands| *operands = [open_rings(subject), open_rings(clipping)]);
+        self.edit(&[Operand::Subject, Operand::Clipping], |operands| {
+            *operands = [open_rings(subject), open_rings(clipping)]
+        });
     }
 
     pub fn can_undo(&self) -> bool {
@@ -122,16 +148,15 @@ impl Scene {
 
     pub fn undo(&mut self) {
         if let Some(previous) = self.undo.pop() {
-            self.redo
-                .push(std::mem::replace(&mut self.operands, previous));
-            self.generation += 1;
+            let current = self.restore(previous);
+            self.redo.push(current);
         }
     }
 
     pub fn redo(&mut self) {
         if let Some(next) = self.redo.pop() {
-            self.undo.push(std::mem::replace(&mut self.operands, next));
-            self.generation += 1;
+            let current = self.restore(next);
+            self.undo.push(current);
         }
     }
 
@@ -150,6 +175,7 @@ impl Scene {
             ring_mut(&mut self.operands[id.operand.index()], id).and_then(|r| r.get_mut(id.vertex))
         {
             *p = to;
+            self.revisions[id.operand.index()] += 1;
         }
     }
 
@@ -159,7 +185,7 @@ impl Scene {
         if self.point(id).is_none() {
             return;
         }
-        self.edit(|operands| {
+        self.edit(&[id.operand], |operands| {
             let polygons = &mut operands[id.operand.index()].0;
             let polygon = &mut polygons[id.polygon];
             let ring = if id.ring == 0 {
@@ -200,7 +226,7 @@ impl Scene {
                 ring.reverse();
             }
         }
-        self.edit(|operands| {
+        self.edit(&[which], |operands| {
             let polygons = &mut operands[which.index()].0;
             match host {
                 Some((i, _)) => polygons[i].holes.push(ring),

@@ -334,3 +334,28 @@ fn history_on_large_data_is_bounded_by_its_size() {
         "as many steps as fit in 4 million vertices"
     );
 }
+
+#[test]
+fn an_edit_invalidates_only_what_derives_from_its_operand() {
+    let mut app = Playground::default();
+    draw_square(&mut app, Operand::Subject, 0.0, 0.0, 4.0);
+    draw_square(&mut app, Operand::Clipping, 2.0, 2.0, 4.0);
+    let revisions =
+        |app: &Playground| [Operand::Subject, Operand::Clipping].map(|w| app.scene.revision(w));
+    let before = revisions(&app);
+    app.scene.checkpoint();
+    app.scene
+        .move_vertex(vertex_of(Operand::Subject, 0, 2), p(5.0, 5.0));
+    let moved = revisions(&app);
+    assert!(
+        moved[0] != before[0] && moved[1] == before[1],
+        "moving a vertex of P leaves Q's fill alone"
+    );
+    app.scene.undo();
+    assert!(revisions(&app)[0] != moved[0] && revisions(&app)[1] == before[1]);
+    assert_eq!(
+        result_area(&mut app),
+        4.0,
+        "and the result follows the undo"
+    );
+}
