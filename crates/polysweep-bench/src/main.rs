@@ -6,6 +6,9 @@
 //!
 //! Writes target/bench/native.json, and the square grids of every N as GeoJSON (target/bench/squares-N.json) for
 //! the wasm benchmark (web/bench/wasm.mjs). `cargo run --release -p polysweep-bench`.
+//!
+//! For profiling, arguments narrow the run: `-- polysweep 3895` runs only the engines and sizes named (engine names,
+//! `floor` for the sort floor, numbers of squares) and writes no report.
 
 use geo::{Area, BooleanOps};
 use i_overlay::core::fill_rule::FillRule as IFillRule;
@@ -135,7 +138,44 @@ impl Inputs {
     }
 }
 
-fn run_all(operation: &str, land: &Inputs, clip: &Inputs, n: usize, out: &mut Vec<Value>) {
+/// The engines and sizes named on the command line; empty means all.
+struct Filter {
+    engines: Vec<String>,
+    sizes: Vec<usize>,
+}
+
+impl Filter {
+    fn from_args() -> Self {
+        let (sizes, engines): (Vec<String>, Vec<String>) = std::env::args()
+            .skip(1)
+            .partition(|a| a.parse::<usize>().is_ok());
+        Filter {
+            engines,
+            sizes: sizes.iter().map(|s| s.parse().unwrap()).collect(),
+        }
+    }
+
+    fn is_narrowed(&self) -> bool {
+        !self.engines.is_empty() || !self.sizes.is_empty()
+    }
+
+    fn engine(&self, name: &str) -> bool {
+        self.engines.is_empty() || self.engines.iter().any(|e| e == name)
+    }
+
+    fn size(&self, n: usize) -> bool {
+        self.sizes.is_empty() || self.sizes.contains(&n)
+    }
+}
+
+fn run_all(
+    operation: &str,
+    land: &Inputs,
+    clip: &Inputs,
+    n: usize,
+    filter: &Filter,
+    out: &mut Vec<Value>,
+) {
     let op = match operation {
         "intersection" => (Operation::Intersection, OverlayRule::Intersect),
         "union" => (Operation::Union, OverlayRule::Union),
@@ -185,7 +225,7 @@ fn run_all(operation: &str, land: &Inputs, clip: &Inputs, n: usize, out: &mut Ve
             }),
         ),
     ];
-    for (engine, mut f) in engines {
+    for (engine, mut f) in engines.into_iter().filter(|(e, _)| filter.engine(e)) {
         let (ms, area) = median_ms(&mut f);
         println!("{operation:>12} {n:>6} squares  {engine:<10} {ms:>9.2} ms  area {area:.6}");
         out.push(json!({ "engine": engine, "operation": operation, "squares": n, "median_ms": ms, "area": area }));
@@ -193,6 +233,7 @@ fn run_all(operation: &str, land: &Inputs, clip: &Inputs, n: usize, out: &mut Ve
 }
 
 fn main() {
+    let filter = Filter::from_args();
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let data = root.join("tests/data");
     let out_dir = root.join("target/bench");
@@ -203,6 +244,7 @@ fn main() {
     let mut sizes: Vec<usize> = SCALING.iter().chain(&PAPER).copied().collect();
     sizes.sort();
     sizes.dedup();
+    sizes.retain(|&n| filter.size(n));
     let mut runs = Vec::new();
     let mut floor = Vec::new();
     for &n in &sizes {
@@ -219,8 +261,15 @@ fn main() {
         )
         .unwrap();
         let clip = Inputs::new(grid);
-        run_all("intersection", &land, &clip, n, &mut runs);
+        run_all("intersection", &land, &clip, n, &filter, &mut runs);
+        if n == 3895 {
+            run_all("union", &land, &clip, n, &filter, &mut runs);
+            run_all("difference", &land, &clip, n, &filter, &mut runs);
+        }
         // The floor: sorting the 2n endpoints of the edges, as the event queue's initial sort does.
+        if !filter.engine("floor") {
+            continue;
+        }
         let points: Vec<[f64; 2]> = land
             .shapes
             .iter()
@@ -238,10 +287,6 @@ fn main() {
             "sort floor", ""
         );
         floor.push(json!({ "squares": n, "median_ms": ms }));
-        if n == 3895 {
-            run_all("union", &land, &clip, n, &mut runs);
-            run_all("difference", &land, &clip, n, &mut runs);
-        }
     }
     for (n, reference) in REFERENCE {
         for run in runs
@@ -256,6 +301,9 @@ fn main() {
                 );
             }
         }
+    }
+    if filter.is_narrowed() {
+        return;
     }
     let machine = format!(
         "{} cores, {}",

@@ -8,9 +8,9 @@
 //! Departures from the paper:
 //! - Every edge remembers the input segment it lies on (`line`): sub-edges made by subdivision lie exactly on it,
 //!   so predicates are evaluated against input coordinates only (see the robustness page).
-//! - The queue is a sorted array of the initial 2n events plus a binary heap for the events that subdivision adds.
-//!   Popping takes the smaller head, so the bulk of the work is one sort; the order is the same as one priority
-//!   queue's.
+//! - The queue is the initial 2n events, sorted once and stored in that order, plus a binary heap for the events
+//!   that subdivision adds. Popping takes the smaller head, so the bulk of the work is one sort (of the points by
+//!   value, not through their ids), and the sweep then reads the events front to back.
 
 use crate::exact::{Exact, Line, SweepPoint};
 use std::cmp::Ordering;
@@ -116,32 +116,68 @@ pub(crate) fn event_order(
         .then(a.cmp(&b))
 }
 
-/// The event-point set Q of Fig. 5.
-#[derive(Default)]
+/// Puts the initial events (input edges' endpoints) in the order of [`event_order`] and renumbers them, so that the
+/// sweep reads them front to back. Input points are exact floats, so they are sorted by x as integer keys that order
+/// like the coordinates; only events with one x, which then come out next to each other, are ordered by y and by
+/// `event_order`.
+pub(crate) fn into_sweep_order(mut events: Vec<SweepEvent>, exact: &Exact) -> Vec<SweepEvent> {
+    let mut keys: Vec<(u64, EventId)> = (events.iter().enumerate())
+        .map(|(i, e)| (ordered_bits(e.point.approx[0]), i as EventId))
+        .collect();
+    keys.sort_unstable();
+    let y = |e: EventId| ordered_bits(events[e as usize].point.approx[1]);
+    for same_x in keys.chunk_by_mut(|a, b| a.0 == b.0) {
+        if same_x.len() > 1 {
+            same_x.sort_unstable_by(|a, b| {
+                y(a.1)
+                    .cmp(&y(b.1))
+                    .then_with(|| event_order(&events, exact, a.1, b.1))
+            });
+        }
+    }
+    let mut rank = vec![0 as EventId; events.len()];
+    for (position, key) in keys.iter().enumerate() {
+        rank[key.1 as usize] = position as EventId;
+    }
+    drop(keys);
+    for event in &mut events {
+        event.other = rank[event.other as usize];
+    }
+    // Moves every event to its rank, cycle by cycle, in place: no second copy of the events.
+    for i in 0..events.len() {
+        while rank[i] as usize != i {
+            let j = rank[i] as usize;
+            events.swap(i, j);
+            rank.swap(i, j);
+        }
+    }
+    events
+}
+
+/// The bits of a finite float as an integer that orders like the float, with -0 equal to 0.
+fn ordered_bits(v: f64) -> u64 {
+    let bits = (v + 0.0).to_bits(); // -0 + 0 is +0
+    if bits >> 63 == 1 {
+        !bits
+    } else {
+        bits | 1 << 63
+    }
+}
+
+/// The event-point set Q of Fig. 5: the initial events, already in order (see [`into_sweep_order`]), and a binary
+/// heap for the events that subdivision adds. Popping takes the smaller head; the order is the same as one priority
+/// queue's.
 pub(crate) struct EventQueue {
-    initial: Vec<EventId>,
-    next_initial: usize,
+    initial: EventId,
+    next_initial: EventId,
     heap: Vec<EventId>,
 }
 
 impl EventQueue {
-    /// `key` is each event's point, exact for the initial events (input vertices), so that the sort compares
-    /// floats and calls `order` only on ties.
-    pub fn new(
-        mut initial: Vec<EventId>,
-        key: impl Fn(EventId) -> [f64; 2],
-        order: impl Fn(EventId, EventId) -> Ordering,
-    ) -> Self {
-        initial.sort_unstable_by(|&a, &b| {
-            let (ka, kb) = (key(a), key(b));
-            ka[0]
-                .partial_cmp(&kb[0])
-                .unwrap_or(Ordering::Equal)
-                .then(ka[1].partial_cmp(&kb[1]).unwrap_or(Ordering::Equal))
-                .then_with(|| order(a, b))
-        });
+    /// A queue whose first `initial` events are `0..initial` in order.
+    pub fn new(initial: usize) -> Self {
         EventQueue {
-            initial,
+            initial: initial as EventId,
             next_initial: 0,
             heap: Vec::new(),
         }
@@ -161,7 +197,7 @@ impl EventQueue {
     }
 
     pub fn pop(&mut self, order: impl Fn(EventId, EventId) -> Ordering) -> Option<EventId> {
-        let initial = self.initial.get(self.next_initial).copied();
+        let initial = Some(self.next_initial).filter(|&i| i < self.initial);
         let from_heap = match (initial, self.heap.first()) {
             (None, None) => return None,
             (Some(_), None) => false,
@@ -200,9 +236,9 @@ mod tests {
 
     #[test]
     fn queue_pops_in_order_across_initial_and_pushed_events() {
-        let keys = [5, 1, 9, 3, 7, 2, 8];
+        let keys = [1, 5, 9, 3, 7, 2, 8];
         let order = |a: EventId, b: EventId| keys[a as usize].cmp(&keys[b as usize]);
-        let mut queue = EventQueue::new(vec![0, 1, 2], |e| [keys[e as usize] as f64, 0.0], order);
+        let mut queue = EventQueue::new(3);
         for e in [3, 4, 5, 6] {
             queue.push(e, order);
         }

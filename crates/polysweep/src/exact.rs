@@ -176,6 +176,10 @@ fn rounding_error(v: f64) -> f64 {
     v.abs() * FILTER_RELATIVE / 4.0 + FILTER_ABSOLUTE
 }
 
+/// Shewchuk's error bound of the first stage of orient2d, (3 + 16ε)ε with ε = 2^-53, relative to the sum of the
+/// magnitudes of the two products.
+const ORIENT_FILTER: f64 = (3.0 + 16.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2.0;
+
 /// The sign of `value`, if it is farther from zero than `bound`.
 fn filtered_sign(value: f64, bound: f64) -> Option<Ordering> {
     if value > bound {
@@ -216,11 +220,21 @@ impl Exact {
     }
 
     /// Compares one coordinate of two points exactly.
+    #[inline]
     pub fn cmp_coordinate(&self, p: &SweepPoint, q: &SweepPoint, axis: usize) -> Ordering {
-        let (u, v) = (p.approx[axis], q.approx[axis]);
         if p.representable[axis] && q.representable[axis] {
+            let (u, v) = (p.approx[axis], q.approx[axis]);
             return u.partial_cmp(&v).unwrap_or(Ordering::Equal); // -0 equals 0
         }
+        self.cmp_coordinate_of_crossing(p, q, axis)
+    }
+
+    #[inline(never)]
+    fn cmp_coordinate_of_crossing(&self, p: &SweepPoint, q: &SweepPoint, axis: usize) -> Ordering {
+        if p.crossing == q.crossing {
+            return Ordering::Equal; // the events of one crossing (`INPUT` points are representable)
+        }
+        let (u, v) = (p.approx[axis], q.approx[axis]);
         let bound = 2.0 * (Self::error(p, axis) + Self::error(q, axis));
         filtered_sign(u - v, bound).unwrap_or_else(|| {
             let ((pn, pd), (qn, qd)) = (self.fraction(p, axis), self.fraction(q, axis));
@@ -236,12 +250,41 @@ impl Exact {
 
     /// The side of `p` with respect to `line`: `Greater` if `p` is to the left of `a → b` (above a non-vertical
     /// line), `Less` if to the right (below), `Equal` if on the line.
+    #[inline]
     pub fn orient(&self, line: &Line, p: &SweepPoint) -> Ordering {
-        if p.is_input() {
-            let c = |v: [f64; 2]| robust::Coord { x: v[0], y: v[1] };
-            let det = robust::orient2d(c(line.a), c(line.b), c(p.approx));
-            return det.partial_cmp(&0.0).unwrap_or(Ordering::Equal);
+        if !p.is_input() {
+            return self.orient_crossing(line, p);
         }
+        // Shewchuk's first filter, inline because it almost always decides; his adaptive predicate when it cannot.
+        let [ax, ay, bx, by, px, py] = [
+            line.a[0],
+            line.a[1],
+            line.b[0],
+            line.b[1],
+            p.approx[0],
+            p.approx[1],
+        ];
+        let (left, right) = ((ax - px) * (by - py), (ay - py) * (bx - px));
+        let bound = ORIENT_FILTER * (left.abs() + right.abs());
+        let det = left - right;
+        if det > bound {
+            Ordering::Greater
+        } else if det < -bound {
+            Ordering::Less
+        } else {
+            Self::orient_adaptive(line, p.approx)
+        }
+    }
+
+    #[inline(never)]
+    fn orient_adaptive(line: &Line, p: [f64; 2]) -> Ordering {
+        let c = |v: [f64; 2]| robust::Coord { x: v[0], y: v[1] };
+        let det = robust::orient2d(c(line.a), c(line.b), c(p));
+        det.partial_cmp(&0.0).unwrap_or(Ordering::Equal)
+    }
+
+    #[inline(never)]
+    fn orient_crossing(&self, line: &Line, p: &SweepPoint) -> Ordering {
         let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
         let (px, py) = (p.approx[0] - line.a[0], p.approx[1] - line.a[1]);
         let (left, right) = (dx * py, dy * px);

@@ -74,6 +74,13 @@ impl Bounds {
     }
 }
 
+/// Room for the events of `operands`: two per vertex, and a quarter as many again for those that subdivision adds,
+/// so that the sweep rarely has to move them all to a larger allocation.
+pub(crate) fn event_capacity<'a>(operands: impl IntoIterator<Item = &'a MultiPolygon>) -> usize {
+    let vertices: usize = operands.into_iter().map(MultiPolygon::vertex_count).sum();
+    2 * vertices + vertices / 2
+}
+
 /// Appends two events per edge of every ring of `polygons` whose polygon's box (of all its rings) meets `region`. Edges of zero length
 /// are skipped; a ring with fewer than three vertices still gives its edges, which cancel each other (§7.2).
 ///

@@ -117,7 +117,7 @@ pub fn overlay_with_stats(
         Operation::Difference => (Bounds::EVERYWHERE, subject_box),
         Operation::Union | Operation::Xor => (Bounds::EVERYWHERE, Bounds::EVERYWHERE),
     };
-    let mut events = Vec::new();
+    let mut events = Vec::with_capacity(input::event_capacity([subject, clipping]));
     input::add_events(&mut events, subject, 0, &subject_region);
     input::add_events(&mut events, clipping, 1, &clipping_region);
     let stop_x = stop_x(operation, subject, [clipping]);
@@ -164,7 +164,7 @@ fn sweep(
     let (mut result, mut stats, mut suspect) = sweep_once(events, selection, stop_x);
     stats.input_edges = input_edges;
     while suspect && stats.repair_passes < MAX_REPAIR_PASSES {
-        let mut events = Vec::new();
+        let mut events = Vec::with_capacity(input::event_capacity([&result]));
         input::add_events(&mut events, &result, 0, &Bounds::EVERYWHERE);
         let repair = Selection::Count {
             operation: Operation::Union,
@@ -268,9 +268,9 @@ fn overlay_refs(
         operation: Operation::Union,
         fill_rule: options.fill_rule,
     };
-    let mut events = Vec::new();
+    let mut events = Vec::with_capacity(input::event_capacity(operands.iter().copied()));
     for (index, operand) in operands.iter().enumerate() {
-        let mut own = Vec::new();
+        let mut own = Vec::with_capacity(input::event_capacity([*operand]));
         input::add_events(&mut own, operand, 0, &Bounds::EVERYWHERE);
         let (valid, _) = sweep(own, normalise, f64::INFINITY);
         let slot = usize::from(operation == Operation::Difference && index > 0);

@@ -3,7 +3,8 @@
 //! A treap (a binary search tree balanced by random priorities) with parent links, so that insertion is
 //! O(log n) expected, and removal and the neighbour queries of Fig. 5 (`S.prev`, `S.next`) need no search: each
 //! edge keeps its node. The order itself (§3, §7.1) is decided by the caller's comparison, see
-//! [`crate::sweep`]. No recursion: the depth is random, never driven by the input.
+//! [`crate::sweep`], on a copy of what it needs of each edge (`K`) kept in the node: descending the tree then reads
+//! nodes only, not the events they stand for. No recursion: the depth is random, never driven by the input.
 //!
 //! Departure from the paper: the paper uses an STL `set` and finds an edge again by comparison (`S.find`). Finding
 //! by handle means removal never depends on comparisons made later.
@@ -11,21 +12,22 @@
 use crate::events::{EventId, NONE};
 
 #[derive(Clone, Copy)]
-struct Node {
+struct Node<K> {
+    key: K,
     event: EventId,
     parent: u32,
     children: [u32; 2],
     priority: u32,
 }
 
-pub(crate) struct Status {
-    nodes: Vec<Node>,
+pub(crate) struct Status<K> {
+    nodes: Vec<Node<K>>,
     free: Vec<u32>,
     root: u32,
     random: u32,
 }
 
-impl Default for Status {
+impl<K> Default for Status<K> {
     fn default() -> Self {
         Status {
             nodes: Vec::new(),
@@ -36,18 +38,19 @@ impl Default for Status {
     }
 }
 
-impl Status {
+impl<K: Copy> Status<K> {
     pub fn event(&self, node: u32) -> EventId {
         self.nodes[node as usize].event
     }
 
-    /// Inserts `event`; `below(event, other)` says whether it goes below an edge already in S.
-    pub fn insert(&mut self, event: EventId, below: impl Fn(EventId, EventId) -> bool) -> u32 {
+    /// Inserts `event` with its `key`; `below(key of an edge already in S)` says whether it goes below that edge.
+    pub fn insert(&mut self, event: EventId, key: K, below: impl Fn(&K) -> bool) -> u32 {
         // xorshift: deterministic priorities, so runs are reproducible.
         self.random ^= self.random << 13;
         self.random ^= self.random >> 17;
         self.random ^= self.random << 5;
         let node = Node {
+            key,
             event,
             parent: NONE,
             children: [NONE; 2],
@@ -69,7 +72,7 @@ impl Status {
         }
         let mut current = self.root;
         loop {
-            let side = if below(event, self.nodes[current as usize].event) {
+            let side = if below(&self.nodes[current as usize].key) {
                 0
             } else {
                 1
@@ -175,7 +178,7 @@ impl Status {
 mod tests {
     use super::*;
 
-    fn in_order(status: &Status) -> Vec<EventId> {
+    fn in_order(status: &Status<u32>) -> Vec<EventId> {
         let mut out = Vec::new();
         let mut node = status.root;
         if node == NONE {
@@ -198,7 +201,7 @@ mod tests {
         // Insert a permutation of 0..200 ordered by value.
         for i in 0..200u32 {
             let v = (i * 73) % 200;
-            nodes.push((v, status.insert(v, |a, b| a < b)));
+            nodes.push((v, status.insert(v, v, |&other| v < other)));
         }
         assert_eq!(in_order(&status), (0..200).collect::<Vec<_>>());
         for &(v, node) in nodes.iter().filter(|(v, _)| v % 3 == 0) {

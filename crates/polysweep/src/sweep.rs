@@ -19,7 +19,7 @@
 //! 6), that edge is split at `p` and the new edge is put back in Q. The split makes a right endpoint at `p`, which
 //! §4 orders before every left endpoint at `p`; processing it first keeps the flags of Fig. 9 right.
 
-use crate::events::{event_order, EventId, EventQueue, SweepEvent, NONE};
+use crate::events::{event_order, into_sweep_order, EventId, EventQueue, SweepEvent, NONE};
 use crate::exact::{Exact, Line, SweepPoint};
 use crate::select::Selection;
 use std::cmp::Ordering;
@@ -36,11 +36,20 @@ pub(crate) struct ResultEdge {
     pub below: u32,
 }
 
+/// What the status order reads of an edge in S (see [`Sweep::is_below`]); it never changes while the edge is there.
+#[derive(Clone, Copy)]
+pub(crate) struct StatusKey {
+    line: Line,
+    operand: usize,
+    segment: u32,
+    event: EventId,
+}
+
 pub(crate) struct Sweep {
     pub events: Vec<SweepEvent>,
     pub exact: Exact,
     pub queue: EventQueue,
-    pub status: crate::status::Status,
+    pub status: crate::status::Status<StatusKey>,
     pub selection: Selection,
     /// The point being processed.
     pub current: SweepPoint,
@@ -60,12 +69,8 @@ pub(crate) struct Sweep {
 impl Sweep {
     pub fn new(events: Vec<SweepEvent>, selection: Selection, stop_x: f64) -> Self {
         let exact = Exact::default();
-        let left_events = (0..events.len() as u32).collect();
-        let queue = EventQueue::new(
-            left_events,
-            |e| events[e as usize].point.approx,
-            |a, b| event_order(&events, &exact, a, b),
-        );
+        let events = into_sweep_order(events, &exact);
+        let queue = EventQueue::new(events.len());
         Sweep {
             events,
             exact,
@@ -152,9 +157,9 @@ impl Sweep {
         self.events[e as usize].vertex = (self.vertices.len() - 1) as u32;
     }
 
-    /// The status order: is the new edge `e` below the edge `s` of S?
-    fn is_below(&self, e: EventId, s: EventId) -> bool {
-        let (new, old) = (self.event(e), self.event(s));
+    /// The status order: is the new edge `e` below the edge `old` of S?
+    fn is_below(&self, e: EventId, old: &StatusKey) -> bool {
+        let new = self.event(e);
         let side = match self.exact.orient(&old.line, &new.point) {
             Ordering::Equal => self.exact.orient(&old.line, &self.other_point(e)),
             side => side,
@@ -162,7 +167,9 @@ impl Sweep {
         match side {
             Ordering::Less => true,
             Ordering::Greater => false,
-            Ordering::Equal => (new.operand, new.segment, e) < (old.operand, old.segment, s),
+            Ordering::Equal => {
+                (new.operand, new.segment, e) < (old.operand, old.segment, old.event)
+            }
         }
     }
 
@@ -179,12 +186,6 @@ impl Sweep {
     fn note_close_calls(&mut self, p: &SweepPoint, neighbours: [EventId; 2]) {
         for e in neighbours.into_iter().filter(|&e| e != NONE) {
             let (a, b) = (self.point(e), self.other_point(e));
-            if [a, b]
-                .iter()
-                .any(|q| self.exact.cmp_points(q, p) == Ordering::Equal)
-            {
-                continue; // `p` is a vertex of the edge and moves with it
-            }
             let line = self.event(e).line;
             let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
             let cross = (p.approx[0] - line.a[0]) * dy - (p.approx[1] - line.a[1]) * dx;
@@ -194,7 +195,13 @@ impl Sweep {
                 .fold(0.0f64, |m, v| m.max(v.abs()));
             // distance = |cross| / |d|, compared squared to avoid the square root.
             let clearance = crate::connect::clearance(magnitude);
-            if cross * cross <= clearance * clearance * (dx * dx + dy * dy) {
+            let close = cross * cross <= clearance * clearance * (dx * dx + dy * dy);
+            // A vertex of the edge moves with it.
+            if close
+                && ![a, b]
+                    .iter()
+                    .any(|q| self.exact.cmp_points(q, p) == Ordering::Equal)
+            {
                 self.close_call = true;
             }
         }
@@ -203,7 +210,14 @@ impl Sweep {
     fn process_left(&mut self, e: EventId) {
         // The order reads the events, not S, so S is taken out while it inserts.
         let mut status = std::mem::take(&mut self.status);
-        let node = status.insert(e, |new, old| self.is_below(new, old));
+        let edge = self.event(e);
+        let key = StatusKey {
+            line: edge.line,
+            operand: edge.operand,
+            segment: edge.segment,
+            event: e,
+        };
+        let node = status.insert(e, key, |old| self.is_below(e, old));
         self.status = status;
         self.inserting = e;
         self.events[e as usize].node = node;
