@@ -93,64 +93,118 @@ impl SweepEvent {
     }
 }
 
+/// An input edge (step 1 of Fig. 5), before it becomes its two events.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct InputEdge {
+    /// Oriented in sweep order: `a` is the left endpoint.
+    pub line: Line,
+    pub operand: Operand,
+    /// +1 when the ring runs from `a` to `b`, else -1 (see [`SweepEvent::winding`]).
+    pub winding: i32,
+}
+
+/// What the event order reads of an event besides its point.
+struct AtPoint {
+    left: bool,
+    line: Line,
+    /// The edge's other endpoint.
+    far: SweepPoint,
+    operand: Operand,
+    segment: u32,
+}
+
+/// The order of two events at one point (§4, §7.1): right endpoints before left ones; then the lower edge first;
+/// collinear edges by operand and input segment.
+fn order_at_point(exact: &Exact, a: &AtPoint, b: &AtPoint) -> Ordering {
+    a.left
+        .cmp(&b.left)
+        // `b`'s far endpoint above `a`'s line means `a` is the lower edge, so `a` goes first.
+        .then_with(|| exact.orient(&a.line, &b.far).reverse())
+        .then(a.operand.cmp(&b.operand))
+        .then(a.segment.cmp(&b.segment))
+}
+
 /// The order in which events are processed (§4 and §7.1): by point, left to right and bottom to top; at one point
-/// right endpoints before left ones; then the lower edge first; collinear edges by operand and input segment.
+/// by [`order_at_point`].
 pub(crate) fn event_order(
     events: &[SweepEvent],
     exact: &Exact,
     a: EventId,
     b: EventId,
 ) -> Ordering {
+    let at_point = |e: EventId| {
+        let event = &events[e as usize];
+        AtPoint {
+            left: event.left,
+            line: event.line,
+            far: events[event.other as usize].point,
+            operand: event.operand,
+            segment: event.segment,
+        }
+    };
     let (ea, eb) = (&events[a as usize], &events[b as usize]);
     exact
         .cmp_points(&ea.point, &eb.point)
-        .then(ea.left.cmp(&eb.left))
-        // `b`'s far endpoint above `a`'s line means `a` is the lower edge, so `a` goes first.
-        .then_with(|| {
-            exact
-                .orient(&ea.line, &events[eb.other as usize].point)
-                .reverse()
-        })
-        .then(ea.operand.cmp(&eb.operand))
-        .then(ea.segment.cmp(&eb.segment))
+        .then_with(|| order_at_point(exact, &at_point(a), &at_point(b)))
         .then(a.cmp(&b))
 }
 
-/// Puts the initial events (input edges' endpoints) in the order of [`event_order`] and renumbers them, so that the
-/// sweep reads them front to back. Input points are exact floats, so they are sorted by x as integer keys that order
-/// like the coordinates; only events with one x, which then come out next to each other, are ordered by y and by
-/// `event_order`.
-pub(crate) fn into_sweep_order(mut events: Vec<SweepEvent>, exact: &Exact) -> Vec<SweepEvent> {
-    let mut keys: Vec<(u64, EventId)> = (events.iter().enumerate())
-        .map(|(i, e)| (ordered_bits(e.point.approx[0]), i as EventId))
+/// The initial events: two per input edge, created in the order of [`event_order`], so that the sweep reads them
+/// front to back. Input points are exact floats, so the endpoints are sorted by x as integer keys that order like
+/// the coordinates; only endpoints with one x, which then come out next to each other, are ordered by y and by
+/// [`order_at_point`]. The sort moves small keys and reads the compact edges, never the larger events.
+pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEvent> {
+    // An endpoint is `2 · edge + 1` for a left endpoint, `2 · edge` for a right one.
+    let point = |end: u32| {
+        let line = &edges[end as usize / 2].line;
+        if end % 2 == 1 {
+            line.a
+        } else {
+            line.b
+        }
+    };
+    let at_point = |end: u32| {
+        let edge = &edges[end as usize / 2];
+        let left = end % 2 == 1;
+        AtPoint {
+            left,
+            line: edge.line,
+            far: SweepPoint::input(if left { edge.line.b } else { edge.line.a }),
+            operand: edge.operand,
+            segment: end / 2,
+        }
+    };
+    let mut keys: Vec<(u64, u32)> = (0..2 * edges.len() as u32)
+        .map(|end| (ordered_bits(point(end)[0]), end))
         .collect();
     keys.sort_unstable();
-    let y = |e: EventId| ordered_bits(events[e as usize].point.approx[1]);
     for same_x in keys.chunk_by_mut(|a, b| a.0 == b.0) {
         if same_x.len() > 1 {
             same_x.sort_unstable_by(|a, b| {
-                y(a.1)
-                    .cmp(&y(b.1))
-                    .then_with(|| event_order(&events, exact, a.1, b.1))
+                (ordered_bits(point(a.1)[1]).cmp(&ordered_bits(point(b.1)[1])))
+                    .then_with(|| order_at_point(exact, &at_point(a.1), &at_point(b.1)))
             });
         }
     }
-    let mut rank = vec![0 as EventId; events.len()];
-    for (position, key) in keys.iter().enumerate() {
-        rank[key.1 as usize] = position as EventId;
+    let mut position = vec![0 as EventId; keys.len()];
+    for (i, key) in keys.iter().enumerate() {
+        position[key.1 as usize] = i as EventId;
     }
-    drop(keys);
-    for event in &mut events {
-        event.other = rank[event.other as usize];
-    }
-    // Moves every event to its rank, cycle by cycle, in place: no second copy of the events.
-    for i in 0..events.len() {
-        while rank[i] as usize != i {
-            let j = rank[i] as usize;
-            events.swap(i, j);
-            rank.swap(i, j);
-        }
-    }
+    // Room for a quarter as many events again from subdivision before the vector has to move.
+    let mut events = Vec::with_capacity(keys.len() + keys.len() / 4);
+    events.extend(keys.iter().map(|&(_, end)| {
+        let edge = &edges[end as usize / 2];
+        let mut event = SweepEvent::new(
+            SweepPoint::input(point(end)),
+            end % 2 == 1,
+            edge.line,
+            edge.operand,
+            end / 2,
+            edge.winding,
+        );
+        event.other = position[end as usize ^ 1];
+        event
+    }));
     events
 }
 
@@ -164,7 +218,7 @@ fn ordered_bits(v: f64) -> u64 {
     }
 }
 
-/// The event-point set Q of Fig. 5: the initial events, already in order (see [`into_sweep_order`]), and a binary
+/// The event-point set Q of Fig. 5: the initial events, already in order (see [`initial_events`]), and a binary
 /// heap for the events that subdivision adds. Popping takes the smaller head; the order is the same as one priority
 /// queue's.
 pub(crate) struct EventQueue {

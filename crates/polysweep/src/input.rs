@@ -1,8 +1,8 @@
 //! Checking the input and turning its rings into sweep events (step 1 of Fig. 5).
 
 use crate::error::{Error, Location};
-use crate::events::{Operand, SweepEvent};
-use crate::exact::{Line, SweepPoint};
+use crate::events::{InputEdge, Operand};
+use crate::exact::Line;
 use crate::geometry::{open_len, MultiPolygon, Point, Polygon};
 
 /// Largest coordinate magnitude accepted: 2^200. Within it (and above [`MIN_COORDINATE`]) the products formed by
@@ -74,20 +74,19 @@ impl Bounds {
     }
 }
 
-/// Room for the events of `operands`: two per vertex, and a quarter as many again for those that subdivision adds,
-/// so that the sweep rarely has to move them all to a larger allocation.
-pub(crate) fn event_capacity<'a>(operands: impl IntoIterator<Item = &'a MultiPolygon>) -> usize {
-    let vertices: usize = operands.into_iter().map(MultiPolygon::vertex_count).sum();
-    2 * vertices + vertices / 2
+/// Room for the edges of `operands`: one per vertex.
+pub(crate) fn edge_capacity<'a>(operands: impl IntoIterator<Item = &'a MultiPolygon>) -> usize {
+    operands.into_iter().map(MultiPolygon::vertex_count).sum()
 }
 
-/// Appends two events per edge of every ring of `polygons` whose polygon's box (of all its rings) meets `region`. Edges of zero length
-/// are skipped; a ring with fewer than three vertices still gives its edges, which cancel each other (§7.2).
+/// Appends the edges of every ring of `polygons` whose polygon's box (of all its rings) meets `region`. Edges of
+/// zero length are skipped; a ring with fewer than three vertices still gives its edges, which cancel each other
+/// (§7.2).
 ///
 /// Leaving out polygons outside `region` is exact, not a heuristic: a ring's winding number is 0 outside its box, so
 /// within `region` the operand's interior, under either fill rule, is that of the polygons kept.
-pub(crate) fn add_events(
-    events: &mut Vec<SweepEvent>,
+pub(crate) fn add_edges(
+    edges: &mut Vec<InputEdge>,
     polygons: &MultiPolygon,
     operand: Operand,
     region: &Bounds,
@@ -107,19 +106,12 @@ pub(crate) fn add_events(
             // Sweep order: by x, then y (§7.1: a vertical edge's lower end is its left end).
             let forward = (from[0], from[1]) < (to[0], to[1]);
             let (a, b) = if forward { (from, to) } else { (to, from) };
-            let line = Line { a, b };
-            let segment = (events.len() / 2) as u32;
-            let id = events.len() as u32;
-            // Crossing an edge upwards enters a counter-clockwise ring when the edge runs left to right.
-            let winding = if forward { 1 } else { -1 };
-            let mut left =
-                SweepEvent::new(SweepPoint::input(a), true, line, operand, segment, winding);
-            let mut right =
-                SweepEvent::new(SweepPoint::input(b), false, line, operand, segment, winding);
-            left.other = id + 1;
-            right.other = id;
-            events.push(left);
-            events.push(right);
+            edges.push(InputEdge {
+                line: Line { a, b },
+                operand,
+                // Crossing an edge upwards enters a counter-clockwise ring when the edge runs left to right.
+                winding: if forward { 1 } else { -1 },
+            });
         }
     }
 }

@@ -65,6 +65,7 @@ pub use input::{MAX_COORDINATE, MIN_COORDINATE};
 pub use select::{FillRule, Operation};
 pub use validate::validate;
 
+use events::InputEdge;
 use input::Bounds;
 use select::Selection;
 
@@ -117,12 +118,12 @@ pub fn overlay_with_stats(
         Operation::Difference => (Bounds::EVERYWHERE, subject_box),
         Operation::Union | Operation::Xor => (Bounds::EVERYWHERE, Bounds::EVERYWHERE),
     };
-    let mut events = Vec::with_capacity(input::event_capacity([subject, clipping]));
-    input::add_events(&mut events, subject, 0, &subject_region);
-    input::add_events(&mut events, clipping, 1, &clipping_region);
+    let mut edges = Vec::with_capacity(input::edge_capacity([subject, clipping]));
+    input::add_edges(&mut edges, subject, 0, &subject_region);
+    input::add_edges(&mut edges, clipping, 1, &clipping_region);
     let stop_x = stop_x(operation, subject, [clipping]);
     Ok(sweep(
-        events,
+        edges,
         Selection::Pair {
             operation,
             fill_rule: options.fill_rule,
@@ -153,35 +154,30 @@ fn stop_x<'a>(
 /// the bound only guarantees that the function returns.
 const MAX_REPAIR_PASSES: usize = 4;
 
-/// The sweep of Fig. 5 over `events`, then the result rounded to f64 and, where rounding may have broken it,
+/// The sweep of Fig. 5 over `edges`, then the result rounded to f64 and, where rounding may have broken it,
 /// repaired by sweeping it again (see the robustness page).
-fn sweep(
-    events: Vec<events::SweepEvent>,
-    selection: Selection,
-    stop_x: f64,
-) -> (MultiPolygon, Stats) {
-    let input_edges = events.len() / 2;
-    let (mut result, mut stats, mut suspect) = sweep_once(events, selection, stop_x);
-    stats.input_edges = input_edges;
+fn sweep(edges: Vec<InputEdge>, selection: Selection, stop_x: f64) -> (MultiPolygon, Stats) {
+    let (mut result, mut stats, mut suspect) = sweep_once(&edges, selection, stop_x);
+    stats.input_edges = edges.len();
     while suspect && stats.repair_passes < MAX_REPAIR_PASSES {
-        let mut events = Vec::with_capacity(input::event_capacity([&result]));
-        input::add_events(&mut events, &result, 0, &Bounds::EVERYWHERE);
+        let mut edges = Vec::with_capacity(input::edge_capacity([&result]));
+        input::add_edges(&mut edges, &result, 0, &Bounds::EVERYWHERE);
         let repair = Selection::Count {
             operation: Operation::Union,
             operands: 1,
         };
-        (result, _, suspect) = sweep_once(events, repair, f64::INFINITY);
+        (result, _, suspect) = sweep_once(&edges, repair, f64::INFINITY);
         stats.repair_passes += 1;
     }
     (result, stats)
 }
 
 fn sweep_once(
-    events: Vec<events::SweepEvent>,
+    edges: &[InputEdge],
     selection: Selection,
     stop_x: f64,
 ) -> (MultiPolygon, Stats, bool) {
-    let mut sweep = sweep::Sweep::new(events, selection, stop_x);
+    let mut sweep = sweep::Sweep::new(edges, selection, stop_x);
     sweep.run();
     let stats = Stats {
         crossings: sweep.exact.crossing_count(),
@@ -268,13 +264,13 @@ fn overlay_refs(
         operation: Operation::Union,
         fill_rule: options.fill_rule,
     };
-    let mut events = Vec::with_capacity(input::event_capacity(operands.iter().copied()));
+    let mut edges = Vec::with_capacity(input::edge_capacity(operands.iter().copied()));
     for (index, operand) in operands.iter().enumerate() {
-        let mut own = Vec::with_capacity(input::event_capacity([*operand]));
-        input::add_events(&mut own, operand, 0, &Bounds::EVERYWHERE);
+        let mut own = Vec::with_capacity(input::edge_capacity([*operand]));
+        input::add_edges(&mut own, operand, 0, &Bounds::EVERYWHERE);
         let (valid, _) = sweep(own, normalise, f64::INFINITY);
         let slot = usize::from(operation == Operation::Difference && index > 0);
-        input::add_events(&mut events, &valid, slot, &Bounds::EVERYWHERE);
+        input::add_edges(&mut edges, &valid, slot, &Bounds::EVERYWHERE);
     }
     let in_slot_0 = if operation == Operation::Difference {
         1
@@ -286,7 +282,7 @@ fn overlay_refs(
         operands: in_slot_0,
     };
     Ok(sweep(
-        events,
+        edges,
         selection,
         stop_x(operation, first, rest.iter().copied()),
     )

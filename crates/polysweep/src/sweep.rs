@@ -19,7 +19,9 @@
 //! 6), that edge is split at `p` and the new edge is put back in Q. The split makes a right endpoint at `p`, which
 //! §4 orders before every left endpoint at `p`; processing it first keeps the flags of Fig. 9 right.
 
-use crate::events::{event_order, into_sweep_order, EventId, EventQueue, SweepEvent, NONE};
+use crate::events::{
+    event_order, initial_events, EventId, EventQueue, InputEdge, SweepEvent, NONE,
+};
 use crate::exact::{Exact, Line, SweepPoint};
 use crate::select::Selection;
 use std::cmp::Ordering;
@@ -67,9 +69,9 @@ pub(crate) struct Sweep {
 }
 
 impl Sweep {
-    pub fn new(events: Vec<SweepEvent>, selection: Selection, stop_x: f64) -> Self {
+    pub fn new(edges: &[InputEdge], selection: Selection, stop_x: f64) -> Self {
         let exact = Exact::default();
-        let events = into_sweep_order(events, &exact);
+        let events = initial_events(edges, &exact);
         let queue = EventQueue::new(events.len());
         Sweep {
             events,
