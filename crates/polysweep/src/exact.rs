@@ -113,12 +113,13 @@ impl Mul for &Dyadic {
     }
 }
 
-/// A crossing point exactly: `(x / den, y / den)` with `den > 0`.
+/// A crossing point exactly: `(x / den, y / den)` with `den > 0`, and the two lines it was made from.
 #[derive(Clone, Debug)]
 struct Crossing {
     x: Dyadic,
     y: Dyadic,
     den: Dyadic,
+    lines: [Line; 2],
 }
 
 /// The supporting line of an input segment, from its first endpoint in sweep order (`a`) to its last (`b`).
@@ -285,6 +286,11 @@ impl Exact {
 
     #[inline(never)]
     fn orient_crossing(&self, line: &Line, p: &SweepPoint) -> Ordering {
+        let c = &self.crossings[p.crossing as usize];
+        if c.lines.contains(line) {
+            // The commonest question about a crossing, and one no filter can answer: it is exactly zero.
+            return Ordering::Equal;
+        }
         let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
         let (px, py) = (p.approx[0] - line.a[0], p.approx[1] - line.a[1]);
         let (left, right) = (dx * py, dy * px);
@@ -295,7 +301,6 @@ impl Exact {
             // (b - a) × (p - a), multiplied through by p's positive denominator.
             let [ax, ay, bx, by] =
                 [line.a[0], line.a[1], line.b[0], line.b[1]].map(Dyadic::from_f64);
-            let c = &self.crossings[p.crossing as usize];
             let (dx, dy) = (&bx - &ax, &by - &ay);
             let (px, py) = (&c.x - &(&ax * &c.den), &c.y - &(&ay * &c.den));
             (&(&dx * &py) - &(&dy * &px)).sign()
@@ -334,7 +339,12 @@ impl Exact {
         let approx = [x.divide_to_f64(&den), y.divide_to_f64(&den)];
         let representable = [(&x, approx[0]), (&y, approx[1])]
             .map(|(n, a)| (&(&Dyadic::from_f64(a) * &den) - n).sign() == Ordering::Equal);
-        self.crossings.push(Crossing { x, y, den });
+        self.crossings.push(Crossing {
+            x,
+            y,
+            den,
+            lines: [*l, *m],
+        });
         SweepPoint {
             approx,
             crossing: (self.crossings.len() - 1) as u32,
