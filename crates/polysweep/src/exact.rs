@@ -12,6 +12,7 @@
 //! replaced by exact ones.
 
 use num_bigint::BigInt;
+use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
@@ -60,14 +61,53 @@ impl Dyadic {
         self.m.sign().cmp(&num_bigint::Sign::NoSign)
     }
 
-    /// The nearest f64 to `self / den` (`den` positive).
-    fn divide_to_f64(&self, den: &Dyadic) -> f64 {
+    /// The nearest f64 to `self / den` (`den` positive), and whether it is exactly `self / den`.
+    fn divide_to_f64(&self, den: &Dyadic) -> (f64, bool) {
+        let (n, d) = (self.m.magnitude(), den.m.magnitude());
+        if n.is_zero() {
+            return (0.0, true);
+        }
+        // q = ⌊n · 2^s / d⌋ has 55 or 56 bits: the 53 of an f64 and two or three more to round by; r is the rest.
+        let s = 55 + d.bits() as i64 - n.bits() as i64;
+        let (q, r) = if s >= 0 {
+            (n << s as usize).div_rem(d)
+        } else {
+            n.div_rem(&(d << (-s) as usize))
+        };
+        let q = q.to_u64().expect("a quotient of at most 56 bits");
+        let extra = 64 - q.leading_zeros() - 53;
+        let (mut mantissa, dropped, half) = (q >> extra, q & ((1 << extra) - 1), 1 << (extra - 1));
+        let exact = dropped == 0 && r.is_zero();
+        // Round to nearest, ties to even; a tie only if nothing is left in r.
+        if dropped > half || (dropped == half && (!r.is_zero() || mantissa & 1 == 1)) {
+            mantissa += 1;
+        }
+        // The value is mantissa · 2^exponent, with mantissa ≤ 2^53.
+        let exponent = self.e - den.e - s + extra as i64;
+        if !(-1022..=900).contains(&exponent) {
+            return self.divide_to_f64_far_from_one(den);
+        }
+        let magnitude = mantissa as f64 * f64::from_bits(((exponent + 1023) as u64) << 52);
+        (
+            if self.m.is_negative() {
+                -magnitude
+            } else {
+                magnitude
+            },
+            exact,
+        )
+    }
+
+    /// [`Self::divide_to_f64`] where the scale is too large or small for its shortcut (no input within the accepted
+    /// range of coordinates comes here).
+    #[cold]
+    fn divide_to_f64_far_from_one(&self, den: &Dyadic) -> (f64, bool) {
         let ratio = BigRational::new_raw(self.m.clone(), den.m.clone())
             .to_f64()
             .unwrap_or(f64::NAN);
-        // Exact scaling by a power of two while the result stays a normal number (the range check of the input
-        // keeps crossings there); `powi` of 2 is exact.
-        ratio * 2f64.powi((self.e - den.e) as i32)
+        let value = ratio * 2f64.powi((self.e - den.e) as i32);
+        let exact = (&(&Dyadic::from_f64(value) * den) - self).sign() == Ordering::Equal;
+        (value, exact)
     }
 }
 
@@ -291,6 +331,24 @@ impl Exact {
             // The commonest question about a crossing, and one no filter can answer: it is exactly zero.
             return Ordering::Equal;
         }
+        // Against an axis-parallel line (grids, boxes, other crossings' lines) the side is one coordinate compared.
+        let a = SweepPoint::input(line.a);
+        if line.a[1] == line.b[1] {
+            let above = self.cmp_coordinate(p, &a, 1);
+            return if line.a[0] < line.b[0] {
+                above
+            } else {
+                above.reverse()
+            };
+        }
+        if line.a[0] == line.b[0] {
+            let left = self.cmp_coordinate(&a, p, 0);
+            return if line.a[1] < line.b[1] {
+                left
+            } else {
+                left.reverse()
+            };
+        }
         let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
         let (px, py) = (p.approx[0] - line.a[0], p.approx[1] - line.a[1]);
         let (left, right) = (dx * py, dy * px);
@@ -336,9 +394,8 @@ impl Exact {
         }
         let x = &(&a1x * &den) + &(&d1x * &t);
         let y = &(&a1y * &den) + &(&d1y * &t);
-        let approx = [x.divide_to_f64(&den), y.divide_to_f64(&den)];
-        let representable = [(&x, approx[0]), (&y, approx[1])]
-            .map(|(n, a)| (&(&Dyadic::from_f64(a) * &den) - n).sign() == Ordering::Equal);
+        let ((ax, x_exact), (ay, y_exact)) = (x.divide_to_f64(&den), y.divide_to_f64(&den));
+        let (approx, representable) = ([ax, ay], [x_exact, y_exact]);
         self.crossings.push(Crossing {
             x,
             y,
@@ -384,6 +441,96 @@ mod tests {
             "1/3 is not a float"
         );
         assert_eq!(x.approx, [1.0 / 3.0, 1.0 / 3.0]);
+    }
+
+    #[test]
+    fn division_rounds_to_nearest_like_the_rational_path() {
+        // Quotients of products of floats, of every size the crossings make, against BigRational's rounding (a
+        // different algorithm), including exact quotients and ties.
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut random = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let float = |bits: u64, scale: i32| {
+            let mantissa = (bits >> 11) as f64 / (1u64 << 53) as f64 + 0.5;
+            let sign = if bits & 1 == 1 { -1.0 } else { 1.0 };
+            sign * mantissa * 2f64.powi(scale)
+        };
+        for i in 0..20_000 {
+            let (a, b) = (
+                float(random(), (random() % 60) as i32 - 30),
+                float(random(), (random() % 60) as i32 - 30).abs(),
+            );
+            // One float by another: IEEE division is correctly rounded too.
+            let (quotient, exact) = Dyadic::from_f64(a).divide_to_f64(&Dyadic::from_f64(b));
+            assert_eq!(quotient, a / b, "{a} / {b}");
+            // q · b − a rounded once (fused) is zero exactly when q · b = a.
+            assert_eq!(exact, quotient.mul_add(b, -a) == 0.0, "{a} / {b}");
+            let mut num = Dyadic::from_f64(a);
+            let mut den = Dyadic::from_f64(b);
+            for _ in 0..i % 3 {
+                num = &num * &Dyadic::from_f64(float(random(), (random() % 60) as i32 - 30));
+                den = &den * &Dyadic::from_f64(float(random(), (random() % 60) as i32 - 30).abs());
+            }
+            if i % 7 == 0 {
+                num = &den * &Dyadic::from_f64(a); // an exact quotient
+                assert_eq!(num.divide_to_f64(&den), (a, true));
+            }
+            if i % 11 == 0 {
+                // A tie: exactly halfway between `a` and the next float up.
+                let mut half_ulp =
+                    Dyadic::from_f64(f64::from_bits(a.abs().to_bits() + 1) - a.abs());
+                half_ulp.e -= 1;
+                let halfway = &Dyadic::from_f64(a.abs()) + &half_ulp;
+                num = &halfway * &den;
+                assert!(!num.divide_to_f64(&den).1);
+            }
+            assert_eq!(
+                num.divide_to_f64(&den),
+                num.divide_to_f64_far_from_one(&den),
+                "case {i}"
+            );
+        }
+    }
+
+    #[test]
+    fn crossing_against_axis_parallel_lines() {
+        let mut exact = Exact::default();
+        let diagonal = Line {
+            a: [0.0, 0.0],
+            b: [3.0, 1.0],
+        };
+        let steep = Line {
+            a: [0.0, 1.0],
+            b: [1.0, 0.0],
+        };
+        let x = exact.crossing(&diagonal, &steep); // (3/4, 1/4)
+        let horizontal = |y: f64, forward: bool| {
+            let (a, b) = ([-5.0, y], [5.0, y]);
+            if forward {
+                Line { a, b }
+            } else {
+                Line { a: b, b: a }
+            }
+        };
+        let vertical = |x: f64, up: bool| {
+            let (a, b) = ([x, -5.0], [x, 5.0]);
+            if up {
+                Line { a, b }
+            } else {
+                Line { a: b, b: a }
+            }
+        };
+        assert_eq!(exact.orient(&horizontal(0.25, true), &x), Ordering::Equal);
+        assert_eq!(exact.orient(&horizontal(0.2, true), &x), Ordering::Greater);
+        assert_eq!(exact.orient(&horizontal(0.2, false), &x), Ordering::Less);
+        assert_eq!(exact.orient(&vertical(0.75, true), &x), Ordering::Equal);
+        assert_eq!(exact.orient(&vertical(0.8, true), &x), Ordering::Greater);
+        assert_eq!(exact.orient(&vertical(0.8, false), &x), Ordering::Less);
+        assert_eq!(exact.orient(&vertical(0.7, true), &x), Ordering::Less);
     }
 
     #[test]
