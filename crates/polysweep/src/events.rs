@@ -151,8 +151,8 @@ pub(crate) fn event_order(
 
 /// The initial events: two per input edge, created in the order of [`event_order`], so that the sweep reads them
 /// front to back. Input points are exact floats, so the endpoints are sorted by x as integer keys that order like
-/// the coordinates; only endpoints with one x, which then come out next to each other, are ordered by y and by
-/// [`order_at_point`]. The sort moves small keys and reads the compact edges, never the larger events.
+/// the coordinates; endpoints with one x, which then come out next to each other, are sorted again by y, and only
+/// those at one point by [`order_at_point`]. The sort moves small keys and reads the compact edges, never the larger events.
 pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEvent> {
     // An endpoint is `2 · edge + 1` for a left endpoint, `2 · edge` for a right one.
     let point = |end: u32| {
@@ -180,10 +180,18 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
     keys.sort_unstable();
     for same_x in keys.chunk_by_mut(|a, b| a.0 == b.0) {
         if same_x.len() > 1 {
-            same_x.sort_unstable_by(|a, b| {
-                (ordered_bits(point(a.1)[1]).cmp(&ordered_bits(point(b.1)[1])))
-                    .then_with(|| order_at_point(exact, &at_point(a.1), &at_point(b.1)))
-            });
+            // Long runs share an x (a column of a grid): by y as keys again, then by order_at_point at each point.
+            for key in same_x.iter_mut() {
+                key.0 = ordered_bits(point(key.1)[1]);
+            }
+            same_x.sort_unstable();
+            for same_point in same_x.chunk_by_mut(|a, b| a.0 == b.0) {
+                if same_point.len() > 1 {
+                    same_point.sort_unstable_by(|a, b| {
+                        order_at_point(exact, &at_point(a.1), &at_point(b.1))
+                    });
+                }
+            }
         }
     }
     let mut position = vec![0 as EventId; keys.len()];

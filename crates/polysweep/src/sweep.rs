@@ -66,6 +66,9 @@ pub(crate) struct Sweep {
     /// Some event point passed within a few ulps of a neighbouring edge: rounding the output could move one across
     /// the other (see `note_close_calls`).
     pub close_call: bool,
+    /// The clearance of the largest coordinate of the input, which bounds every point's (crossings lie between
+    /// input vertices): edges farther than this from a point need no closer look.
+    widest_clearance: f64,
 }
 
 impl Sweep {
@@ -85,6 +88,12 @@ impl Sweep {
             stop_x,
             inserting: NONE,
             close_call: false,
+            widest_clearance: crate::connect::clearance(
+                (edges.iter())
+                    .flat_map(|edge| [edge.line.a, edge.line.b])
+                    .flatten()
+                    .fold(0.0f64, |m, v| m.max(v.abs())),
+            ),
         }
     }
 
@@ -187,19 +196,22 @@ impl Sweep {
     /// lies within a few ulps of it; `close_call` notes it, and the result is then swept again.
     fn note_close_calls(&mut self, p: &SweepPoint, neighbours: [EventId; 2]) {
         for e in neighbours.into_iter().filter(|&e| e != NONE) {
-            let (a, b) = (self.point(e), self.other_point(e));
             let line = self.event(e).line;
             let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
             let cross = (p.approx[0] - line.a[0]) * dy - (p.approx[1] - line.a[1]) * dx;
+            // distance = |cross| / |d|, compared squared to avoid the square root.
+            let within =
+                |clearance: f64| cross * cross <= clearance * clearance * (dx * dx + dy * dy);
+            if !within(self.widest_clearance) {
+                continue;
+            }
+            let (a, b) = (self.point(e), self.other_point(e));
             let magnitude = [a.approx, b.approx, p.approx]
                 .iter()
                 .flatten()
                 .fold(0.0f64, |m, v| m.max(v.abs()));
-            // distance = |cross| / |d|, compared squared to avoid the square root.
-            let clearance = crate::connect::clearance(magnitude);
-            let close = cross * cross <= clearance * clearance * (dx * dx + dy * dy);
             // A vertex of the edge moves with it.
-            if close
+            if within(crate::connect::clearance(magnitude))
                 && ![a, b]
                     .iter()
                     .any(|q| self.exact.cmp_points(q, p) == Ordering::Equal)
