@@ -22,6 +22,7 @@ use crate::geometry::{MultiPolygon, Point, Polygon, Ring};
 use crate::sweep::ResultEdge;
 use crate::validate::Side;
 use std::cmp::Ordering;
+use std::collections::HashMap;
 
 /// Sign of the cross product of the travel directions of two result edges.
 fn cross(exact: &Exact, e: &ResultEdge, f: &ResultEdge) -> Ordering {
@@ -159,25 +160,31 @@ fn merge_rounded(vertices: &[SweepPoint]) -> (Vec<u32>, Vec<Point>) {
     let mut ids: Vec<u32> = Vec::with_capacity(vertices.len());
     let mut points: Vec<Point> = Vec::with_capacity(vertices.len());
     // Rounding is monotone, so the vertices that round to one x are consecutive in sweep order. Distinct input
-    // vertices are distinct floats: only a block of equal x that holds a crossing needs looking into.
+    // vertices are distinct floats: only a block of equal x that holds a crossing needs looking into, by its
+    // vertices' y (a grid's column can hold thousands).
     let (mut block_start, mut block_has_crossing) = (0, false);
+    let mut block_by_y: HashMap<u64, u32> = HashMap::new();
+    let y_key = |y: f64| (y + 0.0).to_bits(); // -0 as 0
     for (i, v) in vertices.iter().enumerate() {
         let [x, y] = v.approx;
         if i == 0 || vertices[i - 1].approx[0] != x {
             (block_start, block_has_crossing) = (i, false);
+            block_by_y.clear();
         }
-        block_has_crossing |= !v.is_input();
-        let same = if block_has_crossing {
-            (block_start..i).find(|&j| vertices[j].approx[1] == y)
-        } else {
-            None
-        };
-        match same {
-            Some(j) => ids.push(ids[j]),
-            None => {
-                points.push(Point::new(x, y));
-                ids.push((points.len() - 1) as u32);
+        if !v.is_input() && !block_has_crossing {
+            block_has_crossing = true;
+            for j in block_start..i {
+                block_by_y.insert(y_key(vertices[j].approx[1]), ids[j]);
             }
+        }
+        let same = block_by_y.get(&y_key(y)).copied();
+        let id = same.unwrap_or_else(|| {
+            points.push(Point::new(x, y));
+            (points.len() - 1) as u32
+        });
+        ids.push(id);
+        if block_has_crossing {
+            block_by_y.insert(y_key(y), id);
         }
     }
     (ids, points)
