@@ -8,6 +8,6 @@ cargo build --quiet --profile wasm --target wasm32-unknown-unknown -p polysweep-
 wasm-bindgen --target web --out-dir pkg --out-name polysweep_wasm \
   target/wasm32-unknown-unknown/wasm/polysweep_wasm.wasm
 # binaryen 132 from npm: the only wasm-opt that reads current rustc output here.
-node_modules/.bin/wasm-opt -Oz --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
+node_modules/.bin/wasm-opt -O3 --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
   --enable-mutable-globals pkg/polysweep_wasm_bg.wasm -o pkg/polysweep_wasm_bg.wasm
 cp web/src/api.js web/src/polysweep.js web/src/polysweep.node.js web/src/polysweep.d.ts pkg/
