@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # The benchmark (issue 5): the paper's Table 1 on real land data, native and wasm, every engine in one run, then
-# the table (docs/benchmarks.md) and the chart (docs/benchmarks.svg). Run ./test.sh once before, which installs the
-# tools and builds the npm package. Timings are medians of one run on this machine; nothing here asserts them.
+# the table (docs/benchmarks.md) and the chart (docs/benchmarks.svg). Installs what it needs first, as test.sh does
+# (the wasm target, wasm-bindgen-cli, the npm packages of the peers). Timings are medians of one run on this
+# machine; nothing here asserts them.
 set -euo pipefail
 cd "$(dirname "$0")"
+source web/tools.sh
+npm install --no-audit --no-fund
 cargo run --quiet --release -p polysweep-bench
 web/build.sh
 node web/bench/wasm.mjs
