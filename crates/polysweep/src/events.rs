@@ -26,6 +26,9 @@ pub(crate) type Operand = usize;
 pub(crate) struct SweepEvent {
     pub point: SweepPoint,
     pub other: EventId,
+    /// The point of `other`, kept here because the sweep reads both ends of an edge together and `other` is
+    /// usually far away in memory.
+    pub other_point: SweepPoint,
     pub left: bool,
     /// The input segment this edge lies on, oriented in sweep order.
     pub line: Line,
@@ -66,6 +69,7 @@ impl SweepEvent {
         SweepEvent {
             point,
             other: NONE,
+            other_point: point,
             left,
             line,
             operand,
@@ -82,11 +86,18 @@ impl SweepEvent {
     }
 
     /// A copy of this edge's identity (line, operand, winding) for a new event of one of its fragments.
-    pub fn fragment(&self, point: SweepPoint, left: bool, other: EventId) -> Self {
+    pub fn fragment(
+        &self,
+        point: SweepPoint,
+        left: bool,
+        other: EventId,
+        other_point: SweepPoint,
+    ) -> Self {
         SweepEvent {
             point,
             left,
             other,
+            other_point,
             winding: self.winding,
             ..SweepEvent::new(point, left, self.line, self.operand, self.segment, 0)
         }
@@ -137,7 +148,7 @@ pub(crate) fn event_order(
         AtPoint {
             left: event.left,
             line: event.line,
-            far: events[event.other as usize].point,
+            far: event.other_point,
             operand: event.operand,
             segment: event.segment,
         }
@@ -211,6 +222,7 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
             edge.winding,
         );
         event.other = position[end as usize ^ 1];
+        event.other_point = SweepPoint::input(point(end ^ 1));
         event
     }));
     events

@@ -101,10 +101,13 @@ impl Sweep {
             self.events.len() as EventId + 1,
         );
         let base = self.event(edge).clone();
-        self.events.push(base.fragment(p, false, edge));
-        self.events.push(base.fragment(p, true, right));
-        self.events[edge as usize].other = new_right;
-        self.events[right as usize].other = new_left;
+        let far = base.other_point;
+        self.events.push(base.fragment(p, false, edge, base.point));
+        self.events.push(base.fragment(p, true, right, far));
+        for (end, other) in [(edge, new_right), (right, new_left)] {
+            self.events[end as usize].other = other;
+            self.events[end as usize].other_point = p;
+        }
         self.push(new_right);
         self.push(new_left);
     }

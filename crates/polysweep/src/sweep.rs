@@ -106,7 +106,7 @@ impl Sweep {
     }
 
     pub fn other_point(&self, e: EventId) -> SweepPoint {
-        self.point(self.event(e).other)
+        self.event(e).other_point
     }
 
     pub fn push(&mut self, e: EventId) {
