@@ -20,7 +20,7 @@ pub(crate) type EventId = u32;
 pub(crate) const NONE: u32 = u32::MAX;
 
 /// Subject or clipping operand (the paper's `pl`).
-pub(crate) type Operand = usize;
+pub(crate) type Operand = u8;
 
 #[derive(Clone, Debug)]
 pub(crate) struct SweepEvent {
@@ -65,7 +65,7 @@ impl SweepEvent {
         winding: i32,
     ) -> Self {
         let mut w = [0; 2];
-        w[operand] = winding;
+        w[operand as usize] = winding;
         SweepEvent {
             point,
             other: NONE,

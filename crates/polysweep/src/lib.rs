@@ -269,7 +269,7 @@ fn overlay_refs(
         let mut own = Vec::with_capacity(input::edge_capacity([*operand]));
         input::add_edges(&mut own, operand, 0, &Bounds::EVERYWHERE);
         let (valid, _) = sweep(own, normalise, f64::INFINITY);
-        let slot = usize::from(operation == Operation::Difference && index > 0);
+        let slot = u8::from(operation == Operation::Difference && index > 0);
         input::add_edges(&mut edges, &valid, slot, &Bounds::EVERYWHERE);
     }
     let in_slot_0 = if operation == Operation::Difference {

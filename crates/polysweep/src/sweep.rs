@@ -20,7 +20,7 @@
 //! §4 orders before every left endpoint at `p`; processing it first keeps the flags of Fig. 9 right.
 
 use crate::events::{
-    event_order, initial_events, EventId, EventQueue, InputEdge, SweepEvent, NONE,
+    event_order, initial_events, EventId, EventQueue, InputEdge, Operand, SweepEvent, NONE,
 };
 use crate::exact::{Exact, Line, SweepPoint};
 use crate::select::Selection;
@@ -42,7 +42,7 @@ pub(crate) struct ResultEdge {
 #[derive(Clone, Copy)]
 pub(crate) struct StatusKey {
     line: Line,
-    operand: usize,
+    operand: Operand,
     segment: u32,
     event: EventId,
 }
