@@ -42,38 +42,44 @@ function coordinatesOf(geom, operand) {
   throw new TypeError(`operand ${operand}: expected GeoJSON Polygon or MultiPolygon coordinates, geometry or feature`);
 }
 
-/** One operand's MultiPolygon coordinates in the flat form, checking their shape on the way. */
+/** One operand's MultiPolygon coordinates in the flat form, checking their shape on the way. (Plain loops: this
+ * runs over every vertex of the input, and is most of the cost of a call outside the core.) */
 function toFlat(multiPolygon, o) {
   if (!Array.isArray(multiPolygon)) throw new TypeError(`operand ${o}: coordinates must be an array of polygons`);
   let vertices = 0;
   let rings = 0;
-  multiPolygon.forEach((polygon, p) => {
+  for (let p = 0; p < multiPolygon.length; p++) {
+    const polygon = multiPolygon[p];
     if (!Array.isArray(polygon)) throw new TypeError(`operand ${o}, polygon ${p}: must be an array of rings`);
-    polygon.forEach((ring, r) => {
+    for (let r = 0; r < polygon.length; r++) {
+      const ring = polygon[r];
       if (!Array.isArray(ring)) throw new TypeError(`operand ${o}, polygon ${p}, ring ${r}: must be an array of positions`);
       rings++;
       vertices += ring.length;
-    });
-  });
+    }
+  }
   const coords = new Float64Array(2 * vertices);
   const ringOffsets = new Uint32Array(rings + 1);
   const polygonOffsets = new Uint32Array(multiPolygon.length + 1);
   let v = 0;
   let r = 0;
-  multiPolygon.forEach((polygon, p) => {
-    polygon.forEach((ring, ri) => {
-      ring.forEach((position, vi) => {
+  for (let p = 0; p < multiPolygon.length; p++) {
+    const polygon = multiPolygon[p];
+    for (let ri = 0; ri < polygon.length; ri++) {
+      const ring = polygon[ri];
+      for (let vi = 0; vi < ring.length; vi++) {
+        const position = ring[vi];
         if (!Array.isArray(position) || typeof position[0] !== 'number' || typeof position[1] !== 'number') {
           throw new TypeError(`operand ${o}, polygon ${p}, ring ${ri}, vertex ${vi}: a position must be an array of two numbers`);
         }
         coords[2 * v] = position[0];
         coords[2 * v + 1] = position[1];
         v++;
-      });
+      }
       ringOffsets[++r] = v;
-    });
+    }
     polygonOffsets[p + 1] = r;
-  });
+  }
   return { coords, ringOffsets, polygonOffsets };
 }
 
@@ -127,15 +133,17 @@ function unpack(packed) {
 }
 
 function toCoordinates({ coords, ringOffsets, polygonOffsets }) {
-  const out = [];
-  for (let p = 0; p + 1 < polygonOffsets.length; p++) {
-    const polygon = [];
-    for (let r = polygonOffsets[p]; r < polygonOffsets[p + 1]; r++) {
-      const ring = [];
-      for (let v = ringOffsets[r]; v < ringOffsets[r + 1]; v++) ring.push([coords[2 * v], coords[2 * v + 1]]);
-      polygon.push(ring);
+  const out = new Array(polygonOffsets.length - 1);
+  for (let p = 0; p < out.length; p++) {
+    const first = polygonOffsets[p];
+    const polygon = new Array(polygonOffsets[p + 1] - first);
+    for (let r = 0; r < polygon.length; r++) {
+      const start = ringOffsets[first + r];
+      const ring = new Array(ringOffsets[first + r + 1] - start);
+      for (let v = 0; v < ring.length; v++) ring[v] = [coords[2 * (start + v)], coords[2 * (start + v) + 1]];
+      polygon[r] = ring;
     }
-    out.push(polygon);
+    out[p] = polygon;
   }
   return out;
 }
