@@ -221,6 +221,8 @@ pub(crate) fn connect(
     below_edge: impl Fn(u32) -> u32,
 ) -> MultiPolygon {
     let (vertex_ids, points) = merge_rounded(vertices);
+    // The exact vertices of each edge, before rounding merges some of them.
+    let exact_ends: Vec<(u32, u32)> = edges.iter().map(|e| (e.from, e.to)).collect();
     for e in edges.iter_mut() {
         e.below = if e.below == NONE {
             NONE
@@ -262,11 +264,8 @@ pub(crate) fn connect(
             let k = (0..ring.len())
                 .min_by_key(|&k| edges[ring[k]].from)
                 .expect("rings are not empty");
-            let exact_turn = cross(
-                exact,
-                &edges[ring[(k + ring.len() - 1) % ring.len()]],
-                &edges[ring[k]],
-            );
+            let (incoming, outgoing) = (ring[(k + ring.len() - 1) % ring.len()], ring[k]);
+            let exact_turn = cross(exact, &edges[incoming], &edges[outgoing]);
             let rounded: Vec<Point> = ring
                 .iter()
                 .map(|&e| points[edges[e].from as usize])
@@ -274,9 +273,11 @@ pub(crate) fn connect(
             let rounded_turn = crate::ring_area(&rounded)
                 .partial_cmp(&0.0)
                 .unwrap_or(Ordering::Equal);
-            // Where rounding merged vertices, the first vertex can be one the ring passes straight through: then
-            // only the rounded orientation tells.
-            if exact_turn == Ordering::Equal || exact_turn == rounded_turn {
+            // Where rounding merged vertices, the two edges need not meet at one exact point (an edge that shrank
+            // to nothing was between them, and they can even run back along each other), or the ring can pass
+            // straight through: then the turn says nothing and only the rounded orientation tells.
+            let meet_exactly = exact_ends[incoming].1 == exact_ends[outgoing].0;
+            if !meet_exactly || exact_turn == Ordering::Equal || exact_turn == rounded_turn {
                 rounded_turn
             } else {
                 Ordering::Equal

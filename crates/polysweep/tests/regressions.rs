@@ -22,3 +22,35 @@ fn a_hole_reaching_outside_its_shell_still_counts() {
         16.0 + 25.0 - 2.0 * 1.0 - 4.0
     );
 }
+
+/// Found by the property test of n-ary operations (with a seed other than CI's): a vertex of one operand that is a
+/// rounded crossing point, (5/3, 13/3) to the nearest floats, lies within an ulp of the other operand's edge from
+/// (1, 5) to (2, 4), and an edge of the first operand passes within an ulp of (2, 4). The result's ring then has a
+/// hairpin there whose two sides round onto each other, and the ring was dropped as if rounding had inverted it.
+/// Expected: the pentagon (2, 2), (16/7, 12/7), (4, 3), (2, 4), (3, 3), area 10/7, plus a sliver thinner than an
+/// ulp along (5/3, 13/3) to (2, 4).
+#[test]
+fn a_ring_with_a_hairpin_at_merged_vertices_is_kept() {
+    let a = MultiPolygon::from_coordinates(&[vec![vec![
+        [0.0, 0.0],
+        [4.0, 3.0],
+        [2.0, 4.0],
+        [1.0, 5.0],
+    ]]]);
+    let b = MultiPolygon::from_coordinates(&[vec![vec![
+        [5.0 / 3.0, 13.0 / 3.0],
+        [3.0, 3.0],
+        [2.0, 2.0],
+        [4.0, 0.0],
+        [4.0, 3.0],
+        [2.0, 5.0],
+    ]]]);
+    for result in [intersection(&a, &b).unwrap(), intersection(&b, &a).unwrap()] {
+        assert!(polysweep::validate(&result).is_ok());
+        assert!(
+            (result.area() - 10.0 / 7.0).abs() < 1e-12,
+            "area {}",
+            result.area()
+        );
+    }
+}
