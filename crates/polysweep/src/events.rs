@@ -270,17 +270,27 @@ impl EventQueue {
         }
     }
 
-    pub fn pop(&mut self, order: impl Fn(EventId, EventId) -> Ordering) -> Option<EventId> {
+    /// The next event, and whether it is at the top of the heap rather than the next initial one.
+    fn head(&self, order: impl Fn(EventId, EventId) -> Ordering) -> Option<(EventId, bool)> {
         let initial = Some(self.next_initial).filter(|&i| i < self.initial);
-        let from_heap = match (initial, self.heap.first()) {
-            (None, None) => return None,
-            (Some(_), None) => false,
-            (None, Some(_)) => true,
-            (Some(i), Some(&h)) => order(h, i) == Ordering::Less,
-        };
+        match (initial, self.heap.first()) {
+            (None, None) => None,
+            (Some(i), None) => Some((i, false)),
+            (None, Some(&h)) => Some((h, true)),
+            (Some(i), Some(&h)) if order(h, i) == Ordering::Less => Some((h, true)),
+            (Some(i), Some(_)) => Some((i, false)),
+        }
+    }
+
+    pub fn peek(&self, order: impl Fn(EventId, EventId) -> Ordering) -> Option<EventId> {
+        self.head(order).map(|(event, _)| event)
+    }
+
+    pub fn pop(&mut self, order: impl Fn(EventId, EventId) -> Ordering) -> Option<EventId> {
+        let (next, from_heap) = self.head(&order)?;
         if !from_heap {
             self.next_initial += 1;
-            return initial;
+            return Some(next);
         }
         let top = self.heap.swap_remove(0);
         let mut parent = 0;

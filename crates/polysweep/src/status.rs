@@ -94,6 +94,17 @@ impl<K: Copy> Status<K> {
         id
     }
 
+    /// What `insert` was given for `node`.
+    pub fn key(&self, node: u32) -> &K {
+        &self.nodes[node as usize].key
+    }
+
+    /// Puts another edge at `node`; the caller guarantees that it belongs at this position of the order.
+    pub fn replace(&mut self, node: u32, event: EventId, key: K) {
+        let n = &mut self.nodes[node as usize];
+        (n.event, n.key) = (event, key);
+    }
+
     pub fn remove(&mut self, node: u32) {
         loop {
             let [l, r] = self.nodes[node as usize].children;

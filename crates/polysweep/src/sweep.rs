@@ -221,18 +221,28 @@ impl Sweep {
         }
     }
 
-    fn process_left(&mut self, e: EventId) {
-        // The order reads the events, not S, so S is taken out while it inserts.
-        let mut status = std::mem::take(&mut self.status);
+    /// What the status order reads of the edge of left event `e`.
+    fn status_key(&self, e: EventId) -> StatusKey {
         let edge = self.event(e);
-        let key = StatusKey {
+        StatusKey {
             line: edge.line,
             operand: edge.operand,
             segment: edge.segment,
             event: e,
-        };
-        let node = status.insert(e, key, |old| self.is_below(e, old));
+        }
+    }
+
+    fn process_left(&mut self, e: EventId) {
+        // The order reads the events, not S, so S is taken out while it inserts.
+        let mut status = std::mem::take(&mut self.status);
+        let node = status.insert(e, self.status_key(e), |old| self.is_below(e, old));
         self.status = status;
+        self.settle(e, node);
+    }
+
+    /// The rest of Fig. 5 for left event `e`, once its edge is at `node` in S: a neighbour through its left
+    /// endpoint is split first; then the flags of Fig. 9 and possibleInter with both neighbours.
+    fn settle(&mut self, e: EventId, node: u32) {
         self.inserting = e;
         self.events[e as usize].node = node;
         let (below, above) = (self.below(node), self.above(node));
@@ -280,10 +290,40 @@ impl Sweep {
                 below: edge.result_below,
             });
         }
-        self.status.remove(node);
         self.events[l as usize].node = NONE;
+        if let Some(next) = self.successor_in_place(node) {
+            self.status.replace(node, next, self.status_key(next));
+            return self.settle(next, node);
+        }
+        self.status.remove(node);
         if below != NONE && above != NONE {
             self.possible_inter(below, above);
         }
+    }
+
+    /// A chain going on (not in the paper): when the next event is a left endpoint at this point whose edge belongs
+    /// exactly where the ending edge at `node` is in S, it is taken from Q to replace that edge in place: no
+    /// removal, no search from the root, and no possibleInter between neighbours that would not stay neighbours.
+    /// The result is the same as removing and inserting; at most vertices of a coastline, this is what happens.
+    fn successor_in_place(&mut self, node: u32) -> Option<EventId> {
+        let (events, exact) = (&self.events, &self.exact);
+        let next = self.queue.peek(|a, b| event_order(events, exact, a, b))?;
+        let event = self.event(next);
+        if !event.left || self.exact.cmp_points(&event.point, &self.current) != Ordering::Equal {
+            return None;
+        }
+        // Neighbours through this point are split first (see `settle`), which the ordinary path handles.
+        let fits = |n: u32, above: bool| {
+            n == NONE
+                || (self.is_below(next, self.status.key(n)) == above
+                    && !self.passes_through(self.status.event(n), &self.current))
+        };
+        if !(fits(self.status.prev(node), false) && fits(self.status.next(node), true)) {
+            return None;
+        }
+        let (events, exact) = (&self.events, &self.exact);
+        self.queue.pop(|a, b| event_order(events, exact, a, b));
+        self.assign_vertex(next);
+        Some(next)
     }
 }
