@@ -277,18 +277,19 @@ impl Sweep {
         }
         let (below, above) = (self.below(node), self.above(node));
         self.note_close_calls(&self.current.clone(), [below, above]);
-        let edge = self.event(l).clone();
+        let edge = self.event(l);
         if edge.in_result {
-            self.events[l as usize].result_edge = self.result.len() as u32;
             let (from, to) = (edge.vertex, self.event(r).vertex);
             let forward = edge.result_above;
-            self.result.push(ResultEdge {
+            let result_edge = ResultEdge {
                 from: if forward { from } else { to },
                 to: if forward { to } else { from },
                 line: edge.line,
                 forward,
                 below: edge.result_below,
-            });
+            };
+            self.events[l as usize].result_edge = self.result.len() as u32;
+            self.result.push(result_edge);
         }
         self.events[l as usize].node = NONE;
         if let Some(next) = self.successor_in_place(node) {
