@@ -18,6 +18,10 @@
 //! Departure from the paper: when a new edge starts at a point `p` inside an edge of S (a vertex on an edge, Fig.
 //! 6), that edge is split at `p` and the new edge is put back in Q. The split makes a right endpoint at `p`, which
 //! §4 orders before every left endpoint at `p`; processing it first keeps the flags of Fig. 9 right.
+//!
+//! Second departure, for speed: where a chain of edges goes on through a vertex (one edge ends there and the next
+//! starts in its place in S, most vertices of real data), the new edge takes the old one's node in S instead of a
+//! removal and an insertion (see `successor_in_place`); the status and the flags come out the same.
 
 use crate::events::{
     event_order, initial_events, EventId, EventQueue, InputEdge, Operand, SweepEvent, NONE,
