@@ -298,7 +298,13 @@ impl Sweep {
         self.events[l as usize].node = NONE;
         if let Some(next) = self.successor_in_place(node) {
             self.status.replace(node, next, self.status_key(next));
-            return self.settle(next, node);
+            self.settle(next, node);
+            // Should `next` have left S again (merged into a neighbour, or put back in Q), the neighbours it
+            // separated are neighbours now, as on the ordinary path.
+            if self.event(next).node == NONE && below != NONE && above != NONE {
+                self.possible_inter(below, above);
+            }
+            return;
         }
         self.status.remove(node);
         if below != NONE && above != NONE {
