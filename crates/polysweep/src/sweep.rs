@@ -241,27 +241,31 @@ impl Sweep {
         let mut status = std::mem::take(&mut self.status);
         let node = status.insert(e, self.status_key(e), |old| self.is_below(e, old));
         self.status = status;
-        self.settle(e, node);
+        self.settle(e, node, false);
     }
 
     /// The rest of Fig. 5 for left event `e`, once its edge is at `node` in S: a neighbour through its left
     /// endpoint is split first; then the flags of Fig. 9 and possibleInter with both neighbours.
-    fn settle(&mut self, e: EventId, node: u32) {
+    /// `neighbours_checked`: the caller has made sure that neither neighbour passes through the point and has
+    /// noted close calls with them (the in-place step, whose neighbours are those of the edge that ended).
+    fn settle(&mut self, e: EventId, node: u32, neighbours_checked: bool) {
         self.inserting = e;
         self.events[e as usize].node = node;
         let (below, above) = (self.below(node), self.above(node));
         let p = self.current;
-        for neighbour in [below, above] {
-            if neighbour != NONE && self.passes_through(neighbour, &p) {
-                self.split(neighbour, p);
-                self.status.remove(node);
-                self.events[e as usize].node = NONE;
-                self.push(e);
-                self.inserting = NONE;
-                return;
+        if !neighbours_checked {
+            for neighbour in [below, above] {
+                if neighbour != NONE && self.passes_through(neighbour, &p) {
+                    self.split(neighbour, p);
+                    self.status.remove(node);
+                    self.events[e as usize].node = NONE;
+                    self.push(e);
+                    self.inserting = NONE;
+                    return;
+                }
             }
+            self.note_close_calls(&p, [below, above]);
         }
-        self.note_close_calls(&p, [below, above]);
         self.selection.set_flags(&mut self.events, e, below);
 
         if below != NONE {
@@ -298,7 +302,7 @@ impl Sweep {
         self.events[l as usize].node = NONE;
         if let Some(next) = self.successor_in_place(node) {
             self.status.replace(node, next, self.status_key(next));
-            self.settle(next, node);
+            self.settle(next, node, true);
             // Should `next` have left S again (merged into a neighbour, or put back in Q), the neighbours it
             // separated are neighbours now, as on the ordinary path.
             if self.event(next).node == NONE && below != NONE && above != NONE {
