@@ -160,31 +160,35 @@ fn merge_rounded(vertices: &[SweepPoint]) -> (Vec<u32>, Vec<Point>) {
     let mut ids: Vec<u32> = Vec::with_capacity(vertices.len());
     let mut points: Vec<Point> = Vec::with_capacity(vertices.len());
     // Rounding is monotone, so the vertices that round to one x are consecutive in sweep order. Distinct input
-    // vertices are distinct floats: only a block of equal x that holds a crossing needs looking into, by its
-    // vertices' y (a grid's column can hold thousands).
+    // vertices are distinct floats: only a block of equal x that holds a crossing needs looking into, by a map of
+    // its rounded points (a grid's column can hold thousands). The map is keyed by both coordinates and never
+    // cleared, so a large block does not make every later block pay for its size.
     let (mut block_start, mut block_has_crossing) = (0, false);
-    let mut block_by_y: HashMap<u64, u32> = HashMap::new();
-    let y_key = |y: f64| (y + 0.0).to_bits(); // -0 as 0
+    let mut in_crossing_blocks: HashMap<[u64; 2], u32> = HashMap::new();
+    let key = |p: [f64; 2]| p.map(|v| (v + 0.0).to_bits()); // -0 as 0
     for (i, v) in vertices.iter().enumerate() {
         let [x, y] = v.approx;
         if i == 0 || vertices[i - 1].approx[0] != x {
             (block_start, block_has_crossing) = (i, false);
-            block_by_y.clear();
         }
         if !v.is_input() && !block_has_crossing {
             block_has_crossing = true;
             for j in block_start..i {
-                block_by_y.insert(y_key(vertices[j].approx[1]), ids[j]);
+                in_crossing_blocks.insert(key(vertices[j].approx), ids[j]);
             }
         }
-        let same = block_by_y.get(&y_key(y)).copied();
+        let same = if block_has_crossing {
+            in_crossing_blocks.get(&key(v.approx)).copied()
+        } else {
+            None
+        };
         let id = same.unwrap_or_else(|| {
             points.push(Point::new(x, y));
             (points.len() - 1) as u32
         });
         ids.push(id);
         if block_has_crossing {
-            block_by_y.insert(y_key(y), id);
+            in_crossing_blocks.insert(key(v.approx), id);
         }
     }
     (ids, points)

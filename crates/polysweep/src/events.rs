@@ -163,7 +163,8 @@ pub(crate) fn event_order(
 /// The initial events: two per input edge, created in the order of [`event_order`], so that the sweep reads them
 /// front to back. Input points are exact floats, so the endpoints are sorted by x as integer keys that order like
 /// the coordinates; endpoints with one x, which then come out next to each other, are sorted again by y, and only
-/// those at one point by [`order_at_point`]. The sort moves small keys and reads the compact edges, never the larger events.
+/// those at one point by [`order_at_point`]. The sort moves small keys and reads the compact edges, never the
+/// larger events.
 pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEvent> {
     // An endpoint is `2 · edge + 1` for a left endpoint, `2 · edge` for a right one.
     let point = |end: u32| {

@@ -218,7 +218,9 @@ fn rounding_error(v: f64) -> f64 {
 }
 
 /// Shewchuk's error bound of the first stage of orient2d, (3 + 16ε)ε with ε = 2^-53, relative to the sum of the
-/// magnitudes of the two products.
+/// magnitudes of the two products. It is a proven bound on the rounding error of the float determinant, not a
+/// tolerance: a determinant beyond it has the sign of the exact one, and anything within it goes to the adaptive
+/// exact predicate, so it cannot change a decision, only how fast it is made.
 const ORIENT_FILTER: f64 = (3.0 + 16.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2.0;
 
 /// The sign of `value`, if it is farther from zero than `bound`.

@@ -74,11 +74,6 @@ impl Bounds {
     }
 }
 
-/// Room for the edges of `operands`: one per vertex.
-pub(crate) fn edge_capacity<'a>(operands: impl IntoIterator<Item = &'a MultiPolygon>) -> usize {
-    operands.into_iter().map(MultiPolygon::vertex_count).sum()
-}
-
 /// Appends the edges of every ring of `polygons` whose polygon's box (of all its rings) meets `region`. Edges of
 /// zero length are skipped; a ring with fewer than three vertices still gives its edges, which cancel each other
 /// (§7.2).
@@ -95,6 +90,7 @@ pub(crate) fn add_edges(
     let near = |p: &&Polygon| {
         *region == Bounds::EVERYWHERE || Bounds::of(p.rings().flatten()).meets(region)
     };
+    edges.reserve(polygons.vertex_count()); // at most one edge per vertex
     for ring in polygons.0.iter().filter(near).flat_map(|p| p.rings()) {
         let n = open_len(ring);
         for i in 0..n {

@@ -118,7 +118,7 @@ pub fn overlay_with_stats(
         Operation::Difference => (Bounds::EVERYWHERE, subject_box),
         Operation::Union | Operation::Xor => (Bounds::EVERYWHERE, Bounds::EVERYWHERE),
     };
-    let mut edges = Vec::with_capacity(input::edge_capacity([subject, clipping]));
+    let mut edges = Vec::new();
     input::add_edges(&mut edges, subject, 0, &subject_region);
     input::add_edges(&mut edges, clipping, 1, &clipping_region);
     let stop_x = stop_x(operation, subject, [clipping]);
@@ -160,7 +160,7 @@ fn sweep(edges: Vec<InputEdge>, selection: Selection, stop_x: f64) -> (MultiPoly
     let (mut result, mut stats, mut suspect) = sweep_once(&edges, selection, stop_x);
     stats.input_edges = edges.len();
     while suspect && stats.repair_passes < MAX_REPAIR_PASSES {
-        let mut edges = Vec::with_capacity(input::edge_capacity([&result]));
+        let mut edges = Vec::new();
         input::add_edges(&mut edges, &result, 0, &Bounds::EVERYWHERE);
         let repair = Selection::Count {
             operation: Operation::Union,
@@ -264,9 +264,9 @@ fn overlay_refs(
         operation: Operation::Union,
         fill_rule: options.fill_rule,
     };
-    let mut edges = Vec::with_capacity(input::edge_capacity(operands.iter().copied()));
+    let mut edges = Vec::new();
     for (index, operand) in operands.iter().enumerate() {
-        let mut own = Vec::with_capacity(input::edge_capacity([*operand]));
+        let mut own = Vec::new();
         input::add_edges(&mut own, operand, 0, &Bounds::EVERYWHERE);
         let (valid, _) = sweep(own, normalise, f64::INFINITY);
         let slot = u8::from(operation == Operation::Difference && index > 0);
