@@ -164,7 +164,9 @@ fn merge_rounded(vertices: &[SweepPoint]) -> (Vec<u32>, Vec<Point>) {
     // its rounded points (a grid's column can hold thousands). The map is keyed by both coordinates and never
     // cleared, so a large block does not make every later block pay for its size.
     let (mut block_start, mut block_has_crossing) = (0, false);
-    let mut in_crossing_blocks: HashMap<[u64; 2], u32> = HashMap::new();
+    // A fixed-seed fast hash: SipHash, std's default, was 5% of the time at 32,768 squares.
+    let mut in_crossing_blocks: HashMap<[u64; 2], u32, foldhash::fast::FixedState> =
+        HashMap::default();
     let key = |p: [f64; 2]| p.map(|v| (v + 0.0).to_bits()); // -0 as 0
     for (i, v) in vertices.iter().enumerate() {
         let [x, y] = v.approx;
