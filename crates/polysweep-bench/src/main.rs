@@ -29,6 +29,8 @@ const REFERENCE: [(usize, f64); 4] = [
     (974, 13451.382211),
     (3895, 13307.146280),
 ];
+/// Timed runs per engine and workload; `BENCH_RUNS` overrides it (more runs steady the minimum for A/B comparisons
+/// on a noisy machine).
 const RUNS: usize = 7;
 
 /// Clipper2 works on integers: coordinates scaled by 10^8, its finest documented precision.
@@ -78,9 +80,11 @@ fn squares(n: usize) -> Coordinates {
         .collect()
 }
 
-fn median_ms(mut run: impl FnMut() -> f64) -> (f64, f64) {
+/// Median and fastest time of the timed runs, and the result area.
+fn median_ms(mut run: impl FnMut() -> f64) -> (f64, f64, f64) {
     let area = run(); // warm-up
-    let mut times: Vec<f64> = (0..RUNS)
+    let runs = std::env::var("BENCH_RUNS").map_or(RUNS, |r| r.parse().expect("BENCH_RUNS: a number of runs"));
+    let mut times: Vec<f64> = (0..runs.max(1))
         .map(|_| {
             let start = Instant::now();
             std::hint::black_box(run());
@@ -88,7 +92,7 @@ fn median_ms(mut run: impl FnMut() -> f64) -> (f64, f64) {
         })
         .collect();
     times.sort_by(f64::total_cmp);
-    (times[RUNS / 2], area)
+    (times[times.len() / 2], times[0], area)
 }
 
 fn geo_multipolygon(c: &Coordinates) -> geo::MultiPolygon<f64> {
@@ -226,8 +230,8 @@ fn run_all(
         ),
     ];
     for (engine, mut f) in engines.into_iter().filter(|(e, _)| filter.engine(e)) {
-        let (ms, area) = median_ms(&mut f);
-        println!("{operation:>12} {n:>6} squares  {engine:<10} {ms:>9.2} ms  area {area:.6}");
+        let (ms, fastest, area) = median_ms(&mut f);
+        println!("{operation:>12} {n:>6} squares  {engine:<10} {ms:>9.2} ms  (fastest {fastest:>8.2})  area {area:.6}");
         out.push(json!({ "engine": engine, "operation": operation, "squares": n, "median_ms": ms, "area": area }));
     }
 }
@@ -277,7 +281,7 @@ fn main() {
             .flatten()
             .flat_map(|r| r.windows(2).flat_map(|w| [w[0], w[1]]))
             .collect();
-        let (ms, _) = median_ms(|| {
+        let (ms, _, _) = median_ms(|| {
             let mut p = points.clone();
             p.sort_unstable_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
             p[0][0]
