@@ -161,10 +161,13 @@ pub(crate) fn event_order(
 }
 
 /// The initial events: two per input edge, created in the order of [`event_order`], so that the sweep reads them
-/// front to back. Input points are exact floats, so the endpoints are sorted by x as integer keys that order like
-/// the coordinates; endpoints with one x, which then come out next to each other, are sorted again by y, and only
-/// those at one point by [`order_at_point`]. The sort moves small keys and reads the compact edges, never the
-/// larger events.
+/// front to back.
+///
+/// Where one edge ends and the next begins (a vertex of a ring: the edges come ring by ring), the two endpoints are
+/// sorted as one: half as many keys as endpoints. Input points are exact floats, so they are sorted by x as integer
+/// keys that order like the coordinates; those with one x, which then come out next to each other, are sorted again
+/// by y, and the endpoints at one point by [`order_at_point`]. The sort moves small keys and reads the compact
+/// edges, never the larger events.
 pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEvent> {
     // An endpoint is `2 · edge + 1` for a left endpoint, `2 · edge` for a right one.
     let point = |end: u32| {
@@ -186,33 +189,58 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
             segment: end / 2,
         }
     };
-    let mut keys: Vec<(u64, u32)> = (0..2 * edges.len() as u32)
-        .map(|end| (ordered_bits(point(end)[0]), end))
+    // The endpoint where edge `j` begins along its ring (it ends at the other one).
+    let begin = |j: usize| 2 * j as u32 + u32::from(edges[j].winding > 0);
+    let mut vertices: Vec<[u32; 2]> = Vec::with_capacity(edges.len() + 1);
+    let mut chain_start = 0; // the first edge of the current chain of edges meeting end to beginning
+    for j in 0..edges.len() {
+        let end = begin(j) ^ 1;
+        if j + 1 < edges.len() && point(begin(j + 1)) == point(end) {
+            vertices.push([end, begin(j + 1)]);
+            continue;
+        }
+        // The chain ends here: a closed ring if it ends where it began (otherwise two loose endpoints).
+        let first = begin(chain_start);
+        if point(first) == point(end) {
+            vertices.push([end, first]);
+        } else {
+            vertices.extend([[end, NONE], [first, NONE]]);
+        }
+        chain_start = j + 1;
+    }
+    let mut keys: Vec<(u64, u32)> = (vertices.iter().enumerate())
+        .map(|(v, ends)| (ordered_bits(point(ends[0])[0]), v as u32))
         .collect();
     keys.sort_unstable();
+    let mut order: Vec<u32> = Vec::with_capacity(2 * edges.len());
+    let mut at_one_point = Vec::new();
     for same_x in keys.chunk_by_mut(|a, b| a.0 == b.0) {
         if same_x.len() > 1 {
-            // Long runs share an x (a column of a grid): by y as keys again, then by order_at_point at each point.
+            // Long runs share an x (a column of a grid): by y as keys again.
             for key in same_x.iter_mut() {
-                key.0 = ordered_bits(point(key.1)[1]);
+                key.0 = ordered_bits(point(vertices[key.1 as usize][0])[1]);
             }
             same_x.sort_unstable();
-            for same_point in same_x.chunk_by_mut(|a, b| a.0 == b.0) {
-                if same_point.len() > 1 {
-                    same_point.sort_unstable_by(|a, b| {
-                        order_at_point(exact, &at_point(a.1), &at_point(b.1))
-                    });
-                }
-            }
+        }
+        for same_point in same_x.chunk_by(|a, b| a.0 == b.0) {
+            at_one_point.clear();
+            at_one_point.extend(
+                (same_point.iter())
+                    .flat_map(|key| vertices[key.1 as usize])
+                    .filter(|&end| end != NONE),
+            );
+            at_one_point
+                .sort_unstable_by(|&a, &b| order_at_point(exact, &at_point(a), &at_point(b)));
+            order.extend_from_slice(&at_one_point);
         }
     }
-    let mut position = vec![0 as EventId; keys.len()];
-    for (i, key) in keys.iter().enumerate() {
-        position[key.1 as usize] = i as EventId;
+    let mut position = vec![0 as EventId; order.len()];
+    for (i, &end) in order.iter().enumerate() {
+        position[end as usize] = i as EventId;
     }
     // Room for a quarter as many events again from subdivision before the vector has to move.
-    let mut events = Vec::with_capacity(keys.len() + keys.len() / 4);
-    events.extend(keys.iter().map(|&(_, end)| {
+    let mut events = Vec::with_capacity(order.len() + order.len() / 4);
+    events.extend(order.iter().map(|&end| {
         let edge = &edges[end as usize / 2];
         let mut event = SweepEvent::new(
             SweepPoint::input(point(end)),
@@ -318,6 +346,59 @@ impl EventQueue {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::MultiPolygon;
+    use crate::input::{add_edges, Bounds};
+
+    #[test]
+    fn initial_events_come_in_event_order() {
+        // Rings that share vertices and edges (two squares side by side, a third touching at a corner), a ring that
+        // passes twice through one point, vertical edges, a column of points with one x, and a ring with two
+        // vertices only (its edges cancel).
+        let ring = |points: &[[f64; 2]]| {
+            let mut ring = points.to_vec();
+            ring.push(points[0]);
+            vec![ring]
+        };
+        let subject = MultiPolygon::from_coordinates(&[
+            ring(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]),
+            ring(&[[1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]]),
+            ring(&[[2.0, 1.0], [3.0, 1.0], [3.0, 2.0], [2.0, 2.0]]),
+            ring(&[
+                [0.0, 3.0],
+                [2.0, 5.0],
+                [2.0, 3.0],
+                [0.0, 5.0],
+                [1.0, 4.0],
+                [-1.0, 4.0],
+                [1.0, 4.0],
+            ]),
+            ring(&[[5.0, 0.0], [5.0, 9.0]]),
+        ]);
+        let clipping = MultiPolygon::from_coordinates(&[
+            ring(&[[1.0, -1.0], [1.0, 3.0], [0.5, 3.0]]),
+            ring(&[[1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]]),
+        ]);
+        let mut edges = Vec::new();
+        add_edges(&mut edges, &subject, 0, &Bounds::EVERYWHERE);
+        add_edges(&mut edges, &clipping, 1, &Bounds::EVERYWHERE);
+        let exact = Exact::default();
+        let events = initial_events(&edges, &exact);
+        assert_eq!(events.len(), 2 * edges.len());
+        for i in 1..events.len() as EventId {
+            assert_eq!(
+                event_order(&events, &exact, i - 1, i),
+                Ordering::Less,
+                "events {} and {i}",
+                i - 1
+            );
+        }
+        for (i, event) in events.iter().enumerate() {
+            let other = &events[event.other as usize];
+            assert_eq!(other.other as usize, i);
+            assert_ne!(other.left, event.left);
+            assert_eq!(other.point.approx, event.other_point.approx);
+        }
+    }
 
     #[test]
     fn queue_pops_in_order_across_initial_and_pushed_events() {
