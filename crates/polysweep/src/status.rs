@@ -1,10 +1,12 @@
 //! The sweep-line status S (§3, §6): the edges crossing the sweep line, bottom to top.
 //!
 //! A treap (a binary search tree balanced by random priorities) with parent links, so that insertion is
-//! O(log n) expected, and removal and the neighbour queries of Fig. 5 (`S.prev`, `S.next`) need no search: each
-//! edge keeps its node. The order itself (§3, §7.1) is decided by the caller's comparison, see
+//! O(log n) expected, and removal needs no search: each edge keeps its node. The nodes are also linked to their
+//! neighbours in the order, so the neighbour queries of Fig. 5 (`S.prev`, `S.next`), made for nearly every event,
+//! read one node instead of walking the tree. The order itself (§3, §7.1) is decided by the caller's comparison, see
 //! [`crate::sweep`], on a copy of what it needs of each edge (`K`) kept in the node: descending the tree then reads
-//! nodes only, not the events they stand for. No recursion: the depth is random, never driven by the input.
+//! nodes only, not the events they stand for. No recursion: the depth is random, never driven by the input (the
+//! tests' tree walk aside).
 //!
 //! Departure from the paper: the paper uses an STL `set` and finds an edge again by comparison (`S.find`). Finding
 //! by handle means removal never depends on comparisons made later.
@@ -17,6 +19,9 @@ struct Node<K> {
     event: EventId,
     parent: u32,
     children: [u32; 2],
+    /// The nodes just below and above in the order: the tree's in-order sequence as a list, which rotations do
+    /// not change.
+    neighbours: [u32; 2],
     priority: u32,
 }
 
@@ -54,6 +59,7 @@ impl<K: Copy> Status<K> {
             event,
             parent: NONE,
             children: [NONE; 2],
+            neighbours: [NONE; 2],
             priority: self.random,
         };
         let id = match self.free.pop() {
@@ -81,6 +87,10 @@ impl<K: Copy> Status<K> {
             if child == NONE {
                 self.nodes[current as usize].children[side] = id;
                 self.nodes[id as usize].parent = current;
+                // A new leaf lies between its parent and the parent's neighbour on that side.
+                let mut neighbours = [current; 2];
+                neighbours[side] = self.nodes[current as usize].neighbours[side];
+                self.link(id, neighbours);
                 break;
             }
             current = child;
@@ -117,34 +127,33 @@ impl<K: Copy> Status<K> {
             self.rotate_up(child);
         }
         self.replace_child(self.nodes[node as usize].parent, node, NONE);
+        let [below, above] = self.nodes[node as usize].neighbours;
+        self.set_neighbour(below, 1, above);
+        self.set_neighbour(above, 0, below);
         self.free.push(node);
     }
 
-    /// The neighbour below (`side` 0) or above (`side` 1), or `NONE`.
-    fn neighbour(&self, node: u32, side: usize) -> u32 {
-        let mut n = self.nodes[node as usize].children[side];
-        if n != NONE {
-            while self.nodes[n as usize].children[1 - side] != NONE {
-                n = self.nodes[n as usize].children[1 - side];
-            }
-            return n;
-        }
-        let mut child = node;
-        while let Some(parent) = self.parent(child) {
-            if self.nodes[parent as usize].children[1 - side] == child {
-                return parent;
-            }
-            child = parent;
-        }
-        NONE
+    /// Puts `node` in the list between `neighbours`.
+    fn link(&mut self, node: u32, neighbours: [u32; 2]) {
+        self.nodes[node as usize].neighbours = neighbours;
+        self.set_neighbour(neighbours[0], 1, node);
+        self.set_neighbour(neighbours[1], 0, node);
     }
 
+    fn set_neighbour(&mut self, node: u32, side: usize, neighbour: u32) {
+        if node != NONE {
+            self.nodes[node as usize].neighbours[side] = neighbour;
+        }
+    }
+
+    /// The neighbour below, or `NONE`.
     pub fn prev(&self, node: u32) -> u32 {
-        self.neighbour(node, 0)
+        self.nodes[node as usize].neighbours[0]
     }
 
+    /// The neighbour above, or `NONE`.
     pub fn next(&self, node: u32) -> u32 {
-        self.neighbour(node, 1)
+        self.nodes[node as usize].neighbours[1]
     }
 
     fn parent(&self, node: u32) -> Option<u32> {
@@ -189,6 +198,21 @@ impl<K: Copy> Status<K> {
 mod tests {
     use super::*;
 
+    /// The tree's in-order sequence, by walking the tree; it must agree with the neighbour list.
+    fn tree_order(status: &Status<u32>) -> Vec<EventId> {
+        fn walk(status: &Status<u32>, node: u32, out: &mut Vec<EventId>) {
+            if node != NONE {
+                let [below, above] = status.nodes[node as usize].children;
+                walk(status, below, out);
+                out.push(status.event(node));
+                walk(status, above, out);
+            }
+        }
+        let mut out = Vec::new();
+        walk(status, status.root, &mut out);
+        out
+    }
+
     fn in_order(status: &Status<u32>) -> Vec<EventId> {
         let mut out = Vec::new();
         let mut node = status.root;
@@ -202,6 +226,7 @@ mod tests {
             out.push(status.event(node));
             node = status.next(node);
         }
+        assert_eq!(out, tree_order(status));
         out
     }
 
