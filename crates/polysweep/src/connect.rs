@@ -154,28 +154,37 @@ pub(crate) fn rounding_may_matter(vertices: &[SweepPoint]) -> bool {
         })
 }
 
-/// Output vertex of each sweep vertex: its coordinates rounded to f64, where distinct exact points that round to
-/// the same floats become one vertex.
-fn merge_rounded(vertices: &[SweepPoint]) -> (Vec<u32>, Vec<Point>) {
-    let mut ids: Vec<u32> = Vec::with_capacity(vertices.len());
-    let mut points: Vec<Point> = Vec::with_capacity(vertices.len());
+/// Output vertex of each sweep vertex on a result edge: its coordinates rounded to f64, where distinct exact points
+/// that round to the same floats become one vertex. Vertices on no result edge (most of them, when little of the
+/// input is kept) are left out, so that the ring walk's tables are only as large as the result.
+fn merge_rounded(vertices: &[SweepPoint], edges: &[ResultEdge]) -> (Vec<u32>, Vec<Point>) {
+    let mut ids: Vec<u32> = vec![NONE; vertices.len()];
+    for e in edges {
+        (ids[e.from as usize], ids[e.to as usize]) = (0, 0);
+    }
+    let mut points: Vec<Point> = Vec::with_capacity(edges.len());
     // Rounding is monotone, so the vertices that round to one x are consecutive in sweep order. Distinct input
     // vertices are distinct floats: only a block of equal x that holds a crossing needs looking into, by a map of
     // its rounded points (a grid's column can hold thousands). The map is keyed by both coordinates and never
     // cleared, so a large block does not make every later block pay for its size.
-    let (mut block_start, mut block_has_crossing) = (0, false);
+    let mut block: Vec<usize> = Vec::new();
+    let mut block_has_crossing = false;
     // A fixed-seed fast hash: SipHash, std's default, was 5% of the time at 32,768 squares.
     let mut in_crossing_blocks: HashMap<[u64; 2], u32, foldhash::fast::FixedState> =
         HashMap::default();
     let key = |p: [f64; 2]| p.map(|v| (v + 0.0).to_bits()); // -0 as 0
     for (i, v) in vertices.iter().enumerate() {
+        if ids[i] == NONE {
+            continue;
+        }
         let [x, y] = v.approx;
-        if i == 0 || vertices[i - 1].approx[0] != x {
-            (block_start, block_has_crossing) = (i, false);
+        if block.last().is_some_and(|&j| vertices[j].approx[0] != x) {
+            block.clear();
+            block_has_crossing = false;
         }
         if !v.is_input() && !block_has_crossing {
             block_has_crossing = true;
-            for j in block_start..i {
+            for &j in &block {
                 in_crossing_blocks.insert(key(vertices[j].approx), ids[j]);
             }
         }
@@ -188,7 +197,8 @@ fn merge_rounded(vertices: &[SweepPoint]) -> (Vec<u32>, Vec<Point>) {
             points.push(Point::new(x, y));
             (points.len() - 1) as u32
         });
-        ids.push(id);
+        ids[i] = id;
+        block.push(i);
         if block_has_crossing {
             in_crossing_blocks.insert(key(v.approx), id);
         }
@@ -226,7 +236,7 @@ pub(crate) fn connect(
     edges: &mut [ResultEdge],
     below_edge: impl Fn(u32) -> u32,
 ) -> MultiPolygon {
-    let (vertex_ids, points) = merge_rounded(vertices);
+    let (vertex_ids, points) = merge_rounded(vertices, edges);
     // The exact vertices of each edge, before rounding merges some of them.
     let exact_ends: Vec<(u32, u32)> = edges.iter().map(|e| (e.from, e.to)).collect();
     for e in edges.iter_mut() {
