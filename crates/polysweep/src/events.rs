@@ -30,10 +30,10 @@ pub(crate) struct SweepEvent {
     /// usually far away in memory.
     pub other_point: SweepPoint,
     pub left: bool,
-    /// The input segment this edge lies on, oriented in sweep order.
-    pub line: Line,
-    pub operand: Operand,
-    /// Index of the input segment: a stable tie-break shared by all fragments of one input edge.
+    /// The edge is vertical (§7.1), as its input segment is.
+    pub vertical: bool,
+    /// Index of the input segment this edge lies on, among the sweep's input edges, which give its line (oriented
+    /// in sweep order) and its operand; also a stable tie-break shared by all fragments of one input edge.
     pub segment: u32,
     /// How crossing this edge upwards (or, when vertical, from right to left) changes the winding number of each
     /// operand. Overlapping edges merged into this one add theirs (§7.2).
@@ -56,25 +56,18 @@ pub(crate) struct SweepEvent {
 }
 
 impl SweepEvent {
-    pub fn new(
-        point: SweepPoint,
-        left: bool,
-        line: Line,
-        operand: Operand,
-        segment: u32,
-        winding: i32,
-    ) -> Self {
-        let mut w = [0; 2];
-        w[operand as usize] = winding;
+    /// An event of input edge `segment`, `edge`.
+    pub fn new(point: SweepPoint, left: bool, segment: u32, edge: &InputEdge) -> Self {
+        let mut winding = [0; 2];
+        winding[edge.operand as usize] = edge.winding;
         SweepEvent {
             point,
             other: NONE,
             other_point: point,
             left,
-            line,
-            operand,
+            vertical: edge.line.is_vertical(),
             segment,
-            winding: w,
+            winding,
             coverage_above: [0; 2],
             in_result: false,
             result_above: false,
@@ -85,7 +78,7 @@ impl SweepEvent {
         }
     }
 
-    /// A copy of this edge's identity (line, operand, winding) for a new event of one of its fragments.
+    /// A copy of this edge's identity (segment, winding) for a new event of one of its fragments.
     pub fn fragment(
         &self,
         point: SweepPoint,
@@ -95,11 +88,19 @@ impl SweepEvent {
     ) -> Self {
         SweepEvent {
             point,
-            left,
             other,
             other_point,
+            left,
+            vertical: self.vertical,
+            segment: self.segment,
             winding: self.winding,
-            ..SweepEvent::new(point, left, self.line, self.operand, self.segment, 0)
+            coverage_above: [0; 2],
+            in_result: false,
+            result_above: false,
+            result_below: NONE,
+            node: NONE,
+            result_edge: NONE,
+            vertex: NONE,
         }
     }
 }
@@ -139,17 +140,19 @@ fn order_at_point(exact: &Exact, a: &AtPoint, b: &AtPoint) -> Ordering {
 /// by [`order_at_point`].
 pub(crate) fn event_order(
     events: &[SweepEvent],
+    edges: &[InputEdge],
     exact: &Exact,
     a: EventId,
     b: EventId,
 ) -> Ordering {
     let at_point = |e: EventId| {
         let event = &events[e as usize];
+        let edge = &edges[event.segment as usize];
         AtPoint {
             left: event.left,
-            line: event.line,
+            line: edge.line,
             far: event.other_point,
-            operand: event.operand,
+            operand: edge.operand,
             segment: event.segment,
         }
     };
@@ -241,14 +244,12 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
     // Room for a quarter as many events again from subdivision before the vector has to move.
     let mut events = Vec::with_capacity(order.len() + order.len() / 4);
     events.extend(order.iter().map(|&end| {
-        let edge = &edges[end as usize / 2];
+        let segment = end / 2;
         let mut event = SweepEvent::new(
             SweepPoint::input(point(end)),
             end % 2 == 1,
-            edge.line,
-            edge.operand,
-            end / 2,
-            edge.winding,
+            segment,
+            &edges[segment as usize],
         );
         event.other = position[end as usize ^ 1];
         event.other_point = SweepPoint::input(point(end ^ 1));
@@ -386,7 +387,7 @@ mod tests {
         assert_eq!(events.len(), 2 * edges.len());
         for i in 1..events.len() as EventId {
             assert_eq!(
-                event_order(&events, &exact, i - 1, i),
+                event_order(&events, &edges, &exact, i - 1, i),
                 Ordering::Less,
                 "events {} and {i}",
                 i - 1

@@ -103,7 +103,7 @@ impl Selection {
     pub fn set_flags(&self, events: &mut [SweepEvent], edge: EventId, below: EventId) {
         let (coverage_below, result_below) = match events.get(below as usize) {
             None => ([0; 2], NONE),
-            Some(b) if b.in_result && !b.line.is_vertical() => (b.coverage_above, below),
+            Some(b) if b.in_result && !b.vertical => (b.coverage_above, below),
             Some(b) => (b.coverage_above, b.result_below),
         };
         let e = &mut events[edge as usize];
@@ -111,11 +111,7 @@ impl Selection {
             coverage_below[0] + e.winding[0],
             coverage_below[1] + e.winding[1],
         ];
-        e.coverage_above = if e.line.is_vertical() {
-            coverage_below
-        } else {
-            crossed
-        };
+        e.coverage_above = if e.vertical { coverage_below } else { crossed };
         e.result_above = self.in_result(crossed);
         e.in_result = self.in_result(coverage_below) != e.result_above;
         e.result_below = result_below;
@@ -169,22 +165,26 @@ mod tests {
             operation: Intersection,
             fill_rule: FillRule::EvenOdd,
         };
+        let edge = |operand| crate::events::InputEdge {
+            line: crate::exact::Line {
+                a: [0.0, 0.0],
+                b: [1.0, 0.0],
+            },
+            operand,
+            winding: 1,
+        };
         let mut events = vec![
             SweepEvent::new(
                 crate::exact::SweepPoint::input([0.0, 0.0]),
                 true,
-                line(),
                 0,
-                0,
-                1,
+                &edge(0),
             ),
             SweepEvent::new(
                 crate::exact::SweepPoint::input([0.0, 1.0]),
                 true,
-                line(),
                 1,
-                1,
-                1,
+                &edge(1),
             ),
         ];
         s.set_flags(&mut events, 0, NONE);
@@ -223,12 +223,5 @@ mod tests {
             fill_rule: FillRule::EvenOdd,
         };
         assert!(!e.in_result([2, 0]));
-    }
-
-    fn line() -> crate::exact::Line {
-        crate::exact::Line {
-            a: [0.0, 0.0],
-            b: [1.0, 0.0],
-        }
     }
 }

@@ -21,10 +21,10 @@ use crate::exact::SweepPoint;
 use crate::sweep::Sweep;
 use std::cmp::Ordering::{Equal, Less};
 
-impl Sweep {
+impl Sweep<'_> {
     /// possibleInter (Fig. 5) of two edges, given as left events, `lower` below `upper` in S.
     pub(crate) fn possible_inter(&mut self, lower: EventId, upper: EventId) {
-        let (l1, l2) = (self.event(lower).line, self.event(upper).line);
+        let (l1, l2) = (self.input_edge(lower).line, self.input_edge(upper).line);
         let (a1, b1) = (self.point(lower), self.other_point(lower));
         let (a2, b2) = (self.point(upper), self.other_point(upper));
         let (s1, s2) = (self.exact.orient(&l2, &a1), self.exact.orient(&l2, &b1));

@@ -51,7 +51,9 @@ pub(crate) struct StatusKey {
     event: EventId,
 }
 
-pub(crate) struct Sweep {
+pub(crate) struct Sweep<'a> {
+    /// The input edges: what every fragment of one keeps of it (its line and operand) is read here.
+    pub edges: &'a [InputEdge],
     pub events: Vec<SweepEvent>,
     pub exact: Exact,
     pub queue: EventQueue,
@@ -75,12 +77,13 @@ pub(crate) struct Sweep {
     widest_clearance: f64,
 }
 
-impl Sweep {
-    pub fn new(edges: &[InputEdge], selection: Selection, stop_x: f64) -> Self {
+impl<'a> Sweep<'a> {
+    pub fn new(edges: &'a [InputEdge], selection: Selection, stop_x: f64) -> Self {
         let exact = Exact::default();
         let events = initial_events(edges, &exact);
         let queue = EventQueue::new(events.len());
         Sweep {
+            edges,
             events,
             exact,
             queue,
@@ -113,9 +116,15 @@ impl Sweep {
         self.event(e).other_point
     }
 
+    /// The input edge that event `e`'s edge lies on.
+    pub fn input_edge(&self, e: EventId) -> &'a InputEdge {
+        &self.edges[self.event(e).segment as usize]
+    }
+
     pub fn push(&mut self, e: EventId) {
-        let (events, exact) = (&self.events, &self.exact);
-        self.queue.push(e, |a, b| event_order(events, exact, a, b));
+        let (events, edges, exact) = (&self.events, self.edges, &self.exact);
+        self.queue
+            .push(e, |a, b| event_order(events, edges, exact, a, b));
     }
 
     /// The edge below `node` in S, as a left event, or `NONE`.
@@ -136,8 +145,11 @@ impl Sweep {
     /// Fig. 5's main loop.
     pub fn run(&mut self) {
         loop {
-            let (events, exact) = (&self.events, &self.exact);
-            let Some(e) = self.queue.pop(|a, b| event_order(events, exact, a, b)) else {
+            let (events, edges, exact) = (&self.events, self.edges, &self.exact);
+            let Some(e) = self
+                .queue
+                .pop(|a, b| event_order(events, edges, exact, a, b))
+            else {
                 break;
             };
             let point = self.point(e);
@@ -183,14 +195,15 @@ impl Sweep {
             Ordering::Less => true,
             Ordering::Greater => false,
             Ordering::Equal => {
-                (new.operand, new.segment, e) < (old.operand, old.segment, old.event)
+                let operand = self.input_edge(e).operand;
+                (operand, new.segment, e) < (old.operand, old.segment, old.event)
             }
         }
     }
 
     /// Does the edge of left event `e` pass through `p` strictly between its endpoints?
     pub fn passes_through(&self, e: EventId, p: &SweepPoint) -> bool {
-        self.exact.orient(&self.event(e).line, p) == Ordering::Equal
+        self.exact.orient(&self.input_edge(e).line, p) == Ordering::Equal
             && self.exact.cmp_points(&self.point(e), p) == Ordering::Less
             && self.exact.cmp_points(p, &self.other_point(e)) == Ordering::Less
     }
@@ -200,7 +213,7 @@ impl Sweep {
     /// lies within a few ulps of it; `close_call` notes it, and the result is then swept again.
     fn note_close_calls(&mut self, p: &SweepPoint, neighbours: [EventId; 2]) {
         for e in neighbours.into_iter().filter(|&e| e != NONE) {
-            let line = self.event(e).line;
+            let line = self.input_edge(e).line;
             let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
             let cross = (p.approx[0] - line.a[0]) * dy - (p.approx[1] - line.a[1]) * dx;
             // distance = |cross| / |d|, compared squared to avoid the square root.
@@ -227,11 +240,11 @@ impl Sweep {
 
     /// What the status order reads of the edge of left event `e`.
     fn status_key(&self, e: EventId) -> StatusKey {
-        let edge = self.event(e);
+        let input = self.input_edge(e);
         StatusKey {
-            line: edge.line,
-            operand: edge.operand,
-            segment: edge.segment,
+            line: input.line,
+            operand: input.operand,
+            segment: self.event(e).segment,
             event: e,
         }
     }
@@ -292,7 +305,7 @@ impl Sweep {
             let result_edge = ResultEdge {
                 from: if forward { from } else { to },
                 to: if forward { to } else { from },
-                line: edge.line,
+                line: self.input_edge(l).line,
                 forward,
                 below: edge.result_below,
             };
@@ -321,8 +334,10 @@ impl Sweep {
     /// removal, no search from the root, and no possibleInter between neighbours that would not stay neighbours.
     /// The result is the same as removing and inserting; at most vertices of a coastline, this is what happens.
     fn successor_in_place(&mut self, node: u32) -> Option<EventId> {
-        let (events, exact) = (&self.events, &self.exact);
-        let next = self.queue.peek(|a, b| event_order(events, exact, a, b))?;
+        let (events, edges, exact) = (&self.events, self.edges, &self.exact);
+        let next = self
+            .queue
+            .peek(|a, b| event_order(events, edges, exact, a, b))?;
         let event = self.event(next);
         if !event.left || self.exact.cmp_points(&event.point, &self.current) != Ordering::Equal {
             return None;
@@ -336,8 +351,9 @@ impl Sweep {
         if !(fits(self.status.prev(node), false) && fits(self.status.next(node), true)) {
             return None;
         }
-        let (events, exact) = (&self.events, &self.exact);
-        self.queue.pop(|a, b| event_order(events, exact, a, b));
+        let (events, edges, exact) = (&self.events, self.edges, &self.exact);
+        self.queue
+            .pop(|a, b| event_order(events, edges, exact, a, b));
         self.assign_vertex(next);
         Some(next)
     }
