@@ -60,22 +60,7 @@ impl SweepEvent {
     pub fn new(point: SweepPoint, left: bool, segment: u32, edge: &InputEdge) -> Self {
         let mut winding = [0; 2];
         winding[edge.operand as usize] = edge.winding;
-        SweepEvent {
-            point,
-            other: NONE,
-            other_point: point,
-            left,
-            vertical: edge.line.is_vertical(),
-            segment,
-            winding,
-            coverage_above: [0; 2],
-            in_result: false,
-            result_above: false,
-            result_below: NONE,
-            node: NONE,
-            result_edge: NONE,
-            vertex: NONE,
-        }
+        Self::unprocessed(point, left, edge.line.is_vertical(), segment, winding)
     }
 
     /// A copy of this edge's identity (segment, winding) for a new event of one of its fragments.
@@ -87,13 +72,28 @@ impl SweepEvent {
         other_point: SweepPoint,
     ) -> Self {
         SweepEvent {
-            point,
             other,
             other_point,
+            ..Self::unprocessed(point, left, self.vertical, self.segment, self.winding)
+        }
+    }
+
+    /// An event that the sweep has not reached yet: no flags, no node, no vertex.
+    fn unprocessed(
+        point: SweepPoint,
+        left: bool,
+        vertical: bool,
+        segment: u32,
+        winding: [i32; 2],
+    ) -> Self {
+        SweepEvent {
+            point,
+            other: NONE,
+            other_point: point,
             left,
-            vertical: self.vertical,
-            segment: self.segment,
-            winding: self.winding,
+            vertical,
+            segment,
+            winding,
             coverage_above: [0; 2],
             in_result: false,
             result_above: false,
