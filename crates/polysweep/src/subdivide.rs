@@ -19,7 +19,7 @@
 use crate::events::EventId;
 use crate::exact::SweepPoint;
 use crate::sweep::Sweep;
-use std::cmp::Ordering::{Equal, Less};
+use std::cmp::Ordering::Equal;
 
 impl Sweep<'_> {
     /// possibleInter (Fig. 5) of two edges, given as left events, `lower` below `upper` in S.
@@ -56,11 +56,6 @@ impl Sweep<'_> {
                 self.split(edge, meeting);
             }
         }
-    }
-
-    fn strictly_inside(&self, edge: EventId, p: &SweepPoint) -> bool {
-        self.exact.cmp_points(&self.point(edge), p) == Less
-            && self.exact.cmp_points(p, &self.other_point(edge)) == Less
     }
 
     /// §7.2: two collinear edges. Splits each at the other's endpoints that lie inside it, then merges the

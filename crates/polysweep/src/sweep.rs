@@ -204,7 +204,13 @@ impl<'a> Sweep<'a> {
     /// Does the edge of left event `e` pass through `p` strictly between its endpoints?
     pub fn passes_through(&self, e: EventId, p: &SweepPoint) -> bool {
         self.exact.orient(&self.input_edge(e).line, p) == Ordering::Equal
-            && self.exact.cmp_points(&self.point(e), p) == Ordering::Less
+            && self.strictly_inside(e, p)
+    }
+
+    /// Is `p` strictly between the endpoints of the edge of left event `e`, in sweep order? (For a point on the
+    /// edge's line: is it inside the edge?)
+    pub fn strictly_inside(&self, e: EventId, p: &SweepPoint) -> bool {
+        self.exact.cmp_points(&self.point(e), p) == Ordering::Less
             && self.exact.cmp_points(p, &self.other_point(e)) == Ordering::Less
     }
 
@@ -342,11 +348,21 @@ impl<'a> Sweep<'a> {
         if !event.left || self.exact.cmp_points(&event.point, &self.current) != Ordering::Equal {
             return None;
         }
-        // Neighbours through this point are split first (see `settle`), which the ordinary path handles.
+        // A neighbour whose line misses the point is on the side the orientation says (`is_below` at the new
+        // edge's left endpoint, asked once). One whose line holds the point ends or starts there, or passes through
+        // it: that one is split first (see `settle`), which the ordinary path handles.
         let fits = |n: u32, above: bool| {
-            n == NONE
-                || (self.is_below(next, self.status.key(n)) == above
-                    && !self.passes_through(self.status.event(n), &self.current))
+            if n == NONE {
+                return true;
+            }
+            let key = self.status.key(n);
+            match self.exact.orient(&key.line, &self.current) {
+                Ordering::Equal => {
+                    !self.strictly_inside(key.event, &self.current)
+                        && self.is_below(next, key) == above
+                }
+                side => (side == Ordering::Less) == above,
+            }
         };
         if !(fits(self.status.prev(node), false) && fits(self.status.next(node), true)) {
             return None;
