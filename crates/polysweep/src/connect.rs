@@ -240,11 +240,6 @@ pub(crate) fn connect(
     // The exact vertices of each edge, before rounding merges some of them.
     let exact_ends: Vec<(u32, u32)> = edges.iter().map(|e| (e.from, e.to)).collect();
     for e in edges.iter_mut() {
-        e.below = if e.below == NONE {
-            NONE
-        } else {
-            below_edge(e.below)
-        };
         e.from = vertex_ids[e.from as usize];
         e.to = vertex_ids[e.to as usize];
     }
@@ -301,11 +296,13 @@ pub(crate) fn connect(
         })
         .collect();
     let is_shell = |r: u32| turn[r as usize] == Ordering::Greater;
-    // The ring of the result edge below ring `r`'s lowest edge at its leftmost vertex.
+    // The ring of the result edge below ring `r`'s lowest edge at its leftmost vertex (asked for holes only, so
+    // the edge below is looked up only for them).
     let ring_below = |r: u32| {
         let (i, o) = leftmost[r as usize];
         [edges[i].below, edges[o].below]
             .into_iter()
+            .map(|b| if b == NONE { NONE } else { below_edge(b) })
             .map(|b| {
                 if b == NONE {
                     NONE
