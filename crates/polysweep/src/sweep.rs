@@ -82,6 +82,10 @@ impl<'a> Sweep<'a> {
         let exact = Exact::default();
         let events = initial_events(edges, &exact);
         let queue = EventQueue::new(events.len());
+        // A ring vertex is two events at one point: room for that many vertices, and for a result edge per two
+        // input edges, so that these vectors seldom move.
+        let vertices = Vec::with_capacity(events.len() / 2);
+        let result = Vec::with_capacity(events.len() / 4);
         Sweep {
             edges,
             events,
@@ -90,8 +94,8 @@ impl<'a> Sweep<'a> {
             status: Default::default(),
             selection,
             current: SweepPoint::input([f64::NEG_INFINITY; 2]),
-            vertices: Vec::new(),
-            result: Vec::new(),
+            vertices,
+            result,
             stop_x,
             inserting: NONE,
             close_call: false,
