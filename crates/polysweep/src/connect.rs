@@ -79,12 +79,15 @@ fn walk_rings(exact: &Exact, vertex_count: usize, edges: &[ResultEdge]) -> Vec<V
     let mut used: Vec<bool> = edges.iter().map(|e| e.from == e.to).collect();
     let mut position_on_path = vec![NONE; vertex_count];
     let mut rings = Vec::new();
+    // The path walked from `start`: its vertices and edges (kept from one start to the next, for their room).
+    let (mut path_vertices, mut path_edges): (Vec<u32>, Vec<usize>) = (Vec::new(), Vec::new());
     for &start in &outgoing {
         if used[start] {
             continue;
         }
-        let mut path_vertices = vec![edges[start].from];
-        let mut path_edges: Vec<usize> = Vec::new();
+        path_vertices.clear();
+        path_vertices.push(edges[start].from);
+        path_edges.clear();
         position_on_path[edges[start].from as usize] = 0;
         let mut current = start;
         loop {
@@ -95,7 +98,8 @@ fn walk_rings(exact: &Exact, vertex_count: usize, edges: &[ResultEdge]) -> Vec<V
             if at != NONE {
                 // Back at a vertex of the path: the loop since then is a ring.
                 let at = at as usize;
-                rings.push(path_edges.split_off(at));
+                rings.push(path_edges[at..].to_vec());
+                path_edges.truncate(at);
                 for &w in &path_vertices[at + 1..] {
                     position_on_path[w as usize] = NONE;
                 }
@@ -313,10 +317,8 @@ pub(crate) fn connect(
             .find(|&b| b != NONE && b != r)
     };
     let to_ring = |ring: &[usize]| -> Ring {
-        let mut out: Ring = ring
-            .iter()
-            .map(|&e| points[edges[e].from as usize])
-            .collect();
+        let mut out: Ring = Vec::with_capacity(ring.len() + 1);
+        out.extend(ring.iter().map(|&e| points[edges[e].from as usize]));
         out.push(out[0]);
         out
     };
