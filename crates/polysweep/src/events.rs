@@ -1,16 +1,17 @@
 //! Sweep events and the event queue (§3, Fig. 5, Fig. 8; the event order of §4 and §7.1).
 //!
 //! An event is one endpoint of an edge and stands for the edge (Fig. 8): `point`, the `other` endpoint, `left`,
-//! the operand (the paper's `pl`). The paper's `inOut` and `inside` flags are generalised to winding counts
+//! and, through its input segment, the operand (the paper's `pl`). The paper's `inOut` and `inside` flags are generalised to winding counts
 //! (`coverage_above`, see [`crate::select`]); its edge `type` of §7.2 is replaced by merging overlapping edges (see
 //! [`crate::subdivide`]).
 //!
 //! Departures from the paper:
-//! - Every edge remembers the input segment it lies on (`line`): sub-edges made by subdivision lie exactly on it,
-//!   so predicates are evaluated against input coordinates only (see the robustness page).
+//! - Every edge remembers the input segment it lies on (`segment`, whose line the sweep reads from the input
+//!   edges): sub-edges made by subdivision lie exactly on it, so predicates are evaluated against input coordinates
+//!   only (see the robustness page).
 //! - The queue is the initial 2n events, sorted once and stored in that order, plus a binary heap for the events
-//!   that subdivision adds. Popping takes the smaller head, so the bulk of the work is one sort (of the points by
-//!   value, not through their ids), and the sweep then reads the events front to back.
+//!   that subdivision adds. Popping takes the smaller head, so the bulk of the work is one sort (of the ring
+//!   vertices' points by value, not through their ids), and the sweep then reads the events front to back.
 
 use crate::exact::{Exact, Line, SweepPoint};
 use std::cmp::Ordering;
