@@ -24,7 +24,7 @@
 //! anything else is an [`Error`] naming the operand, polygon, ring and vertex.
 //!
 //! ## Output contract
-//! The result is a [`MultiPolygon`], checked by [`validate`] in every test:
+//! The result is a [`MultiPolygon`], checked by [`validate`](fn@validate) in every test:
 //! - every ring is closed (first point repeated last) and has at least 3 distinct vertices, with no repeated
 //!   consecutive points and no zero-area spikes;
 //! - exterior rings are counter-clockwise and holes clockwise (RFC 7946);
