@@ -227,6 +227,19 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
             same_x.sort_unstable();
         }
         for same_point in same_x.chunk_by(|a, b| a.0 == b.0) {
+            if let [vertex] = same_point {
+                // The usual case, one vertex at its point: its two endpoints in order, without a sort.
+                let mut ends = vertices[vertex.1 as usize];
+                if ends[1] == NONE {
+                    order.push(ends[0]);
+                    continue;
+                }
+                if order_at_point(exact, &at_point(ends[1]), &at_point(ends[0])) == Ordering::Less {
+                    ends.swap(0, 1);
+                }
+                order.extend(ends);
+                continue;
+            }
             at_one_point.clear();
             at_one_point.extend(
                 (same_point.iter())
