@@ -83,7 +83,8 @@ fn squares(n: usize) -> Coordinates {
 /// Median and fastest time of the timed runs, and the result area.
 fn median_ms(mut run: impl FnMut() -> f64) -> (f64, f64, f64) {
     let area = run(); // warm-up
-    let runs = std::env::var("BENCH_RUNS").map_or(RUNS, |r| r.parse().expect("BENCH_RUNS: a number of runs"));
+    let runs = std::env::var("BENCH_RUNS")
+        .map_or(RUNS, |r| r.parse().expect("BENCH_RUNS: a number of runs"));
     let mut times: Vec<f64> = (0..runs.max(1))
         .map(|_| {
             let start = Instant::now();
