@@ -162,6 +162,7 @@ pub(crate) fn rounding_may_matter(vertices: &[SweepPoint]) -> bool {
 /// that round to the same floats become one vertex. Vertices on no result edge (most of them, when little of the
 /// input is kept) are left out, so that the ring walk's tables are only as large as the result.
 fn merge_rounded(vertices: &[SweepPoint], edges: &[ResultEdge]) -> (Vec<u32>, Vec<Point>) {
+    // `NONE` for a vertex on no result edge; the others are marked (0) here and numbered below.
     let mut ids: Vec<u32> = vec![NONE; vertices.len()];
     for e in edges {
         (ids[e.from as usize], ids[e.to as usize]) = (0, 0);
@@ -306,14 +307,10 @@ pub(crate) fn connect(
         let (i, o) = leftmost[r as usize];
         [edges[i].below, edges[o].below]
             .into_iter()
-            .map(|b| if b == NONE { NONE } else { below_edge(b) })
-            .map(|b| {
-                if b == NONE {
-                    NONE
-                } else {
-                    ring_of_edge[b as usize]
-                }
-            })
+            .filter(|&b| b != NONE)
+            .map(&below_edge)
+            .filter(|&b| b != NONE) // an edge the sweep stopped before recording
+            .map(|b| ring_of_edge[b as usize])
             .find(|&b| b != NONE && b != r)
     };
     let to_ring = |ring: &[usize]| -> Ring {

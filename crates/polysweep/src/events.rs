@@ -1,9 +1,9 @@
 //! Sweep events and the event queue (§3, Fig. 5, Fig. 8; the event order of §4 and §7.1).
 //!
 //! An event is one endpoint of an edge and stands for the edge (Fig. 8): `point`, the `other` endpoint, `left`,
-//! and, through its input segment, the operand (the paper's `pl`). The paper's `inOut` and `inside` flags are generalised to winding counts
-//! (`coverage_above`, see [`crate::select`]); its edge `type` of §7.2 is replaced by merging overlapping edges (see
-//! [`crate::subdivide`]).
+//! and, through its input segment, the operand (the paper's `pl`). The paper's `inOut` and `inside` flags are
+//! generalised to winding counts (`coverage_above`, see [`crate::select`]); its edge `type` of §7.2 is replaced by
+//! merging overlapping edges (see [`crate::subdivide`]).
 //!
 //! Departures from the paper:
 //! - Every edge remembers the input segment it lies on (`segment`, whose line the sweep reads from the input
@@ -31,7 +31,8 @@ pub(crate) struct SweepEvent {
     /// usually far away in memory.
     pub other_point: SweepPoint,
     pub left: bool,
-    /// The edge is vertical (§7.1), as its input segment is.
+    /// The edge is vertical (§7.1), as its input segment is: kept here (in the padding) because the flags of Fig.
+    /// 9 ask it of the edge and of the edge below, which would otherwise cost two reads of the input edges.
     pub vertical: bool,
     /// Index of the input segment this edge lies on, among the sweep's input edges, which give its line (oriented
     /// in sweep order) and its operand; also a stable tie-break shared by all fragments of one input edge.

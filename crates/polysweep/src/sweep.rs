@@ -126,9 +126,9 @@ impl<'a> Sweep<'a> {
     }
 
     pub fn push(&mut self, e: EventId) {
-        let (events, edges, exact) = (&self.events, self.edges, &self.exact);
-        self.queue
-            .push(e, |a, b| event_order(events, edges, exact, a, b));
+        self.queue.push(e, |a, b| {
+            event_order(&self.events, self.edges, &self.exact, a, b)
+        });
     }
 
     /// The edge below `node` in S, as a left event, or `NONE`.
@@ -148,14 +148,10 @@ impl<'a> Sweep<'a> {
 
     /// Fig. 5's main loop.
     pub fn run(&mut self) {
-        loop {
-            let (events, edges, exact) = (&self.events, self.edges, &self.exact);
-            let Some(e) = self
-                .queue
-                .pop(|a, b| event_order(events, edges, exact, a, b))
-            else {
-                break;
-            };
+        while let Some(e) = self
+            .queue
+            .pop(|a, b| event_order(&self.events, self.edges, &self.exact, a, b))
+        {
             let point = self.point(e);
             if self
                 .exact
@@ -344,10 +340,9 @@ impl<'a> Sweep<'a> {
     /// removal, no search from the root, and no possibleInter between neighbours that would not stay neighbours.
     /// The result is the same as removing and inserting; at most vertices of a coastline, this is what happens.
     fn successor_in_place(&mut self, node: u32) -> Option<EventId> {
-        let (events, edges, exact) = (&self.events, self.edges, &self.exact);
         let next = self
             .queue
-            .peek(|a, b| event_order(events, edges, exact, a, b))?;
+            .peek(|a, b| event_order(&self.events, self.edges, &self.exact, a, b))?;
         let event = self.event(next);
         if !event.left || self.exact.cmp_points(&event.point, &self.current) != Ordering::Equal {
             return None;
@@ -371,9 +366,8 @@ impl<'a> Sweep<'a> {
         if !(fits(self.status.prev(node), false) && fits(self.status.next(node), true)) {
             return None;
         }
-        let (events, edges, exact) = (&self.events, self.edges, &self.exact);
         self.queue
-            .pop(|a, b| event_order(events, edges, exact, a, b));
+            .pop(|a, b| event_order(&self.events, self.edges, &self.exact, a, b));
         self.assign_vertex(next);
         Some(next)
     }
