@@ -1,8 +1,9 @@
 //! Exact geometric predicates on the points of the sweep (see the [robustness page](crate::robustness)).
 //!
 //! A point of the sweep is either an input vertex (two f64, exact) or the crossing of the supporting lines of two
-//! input segments, kept exactly as `(x, y) / d` in dyadic big integers. Every predicate the sweep asks — the order of two points
-//! (§4's event order) and the side of a point with respect to an input segment's line (the status order of §3,
+//! input segments, defined exactly by those two lines, with its correctly rounded f64 coordinates (proven by float
+//! arithmetic where possible, see [`estimate`]) and, made on first need, its exact coordinates `(x, y) / d` in
+//! dyadic big integers. Every predicate the sweep asks — the order of two points (§4's event order) and the side of a point with respect to an input segment's line (the status order of §3,
 //! §7.1 and the intersection tests of Fig. 6) — is answered exactly: first by a floating-point filter with a proven
 //! error bound, and only when the filter cannot decide, by big-integer arithmetic. Computed points are never rounded
 //! for a decision; they are rounded to f64 only when the result rings are written out.
@@ -15,8 +16,11 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
+use std::cell::OnceCell;
 use std::cmp::Ordering;
 use std::ops::{Add, Mul, Neg, Sub};
+
+mod estimate;
 
 /// An exact dyadic number `m · 2^e`: every f64 is one, and sums, differences and products of them are too. No
 /// division and so no gcd: this is what makes the exact path cheap.
@@ -153,13 +157,50 @@ impl Mul for &Dyadic {
     }
 }
 
-/// A crossing point exactly: `(x / den, y / den)` with `den > 0`, and the two lines it was made from.
+/// A crossing point: the two lines it was made from, and its exact coordinates, made when first needed.
 #[derive(Clone, Debug)]
 struct Crossing {
+    lines: [Line; 2],
+    exact: OnceCell<Fraction>,
+}
+
+/// The exact coordinates of a crossing: `(x / den, y / den)` with `den > 0`.
+#[derive(Clone, Debug)]
+struct Fraction {
     x: Dyadic,
     y: Dyadic,
     den: Dyadic,
-    lines: [Line; 2],
+}
+
+impl Fraction {
+    /// The point where the lines of `l` and `m` cross (they are not parallel).
+    fn crossing(l: &Line, m: &Line) -> Self {
+        let r = |v: [f64; 2]| [Dyadic::from_f64(v[0]), Dyadic::from_f64(v[1])];
+        let ([a1x, a1y], [b1x, b1y], [a2x, a2y], [b2x, b2y]) = (r(l.a), r(l.b), r(m.a), r(m.b));
+        let (d1x, d1y) = (&b1x - &a1x, &b1y - &a1y);
+        let (d2x, d2y) = (&b2x - &a2x, &b2y - &a2y);
+        // The crossing is a1 + d1 · t / den with t = (a2 - a1) × d2 and den = d1 × d2.
+        let mut den = &(&d1x * &d2y) - &(&d1y * &d2x);
+        let mut t = &(&(&a2x - &a1x) * &d2y) - &(&(&a2y - &a1y) * &d2x);
+        debug_assert!(!den.m.is_zero(), "crossing of parallel lines");
+        if den.m.is_negative() {
+            (den, t) = (-&den, -&t);
+        }
+        Fraction {
+            x: &(&a1x * &den) + &(&d1x * &t),
+            y: &(&a1y * &den) + &(&d1y * &t),
+            den,
+        }
+    }
+
+    /// The nearest floats to the coordinates, and which of them are exact.
+    fn rounded(&self) -> ([f64; 2], [bool; 2]) {
+        let ((x, x_exact), (y, y_exact)) = (
+            self.x.divide_to_f64(&self.den),
+            self.y.divide_to_f64(&self.den),
+        );
+        ([x, y], [x_exact, y_exact])
+    }
 }
 
 /// The supporting line of an input segment, from its first endpoint in sweep order (`a`) to its last (`b`).
@@ -246,12 +287,19 @@ impl Exact {
         if p.representable[axis] {
             (Dyadic::from_f64(p.approx[axis]), Dyadic::one())
         } else {
-            let c = &self.crossings[p.crossing as usize];
+            let c = self.exact_crossing(p);
             (
                 if axis == 0 { c.x.clone() } else { c.y.clone() },
                 c.den.clone(),
             )
         }
+    }
+
+    /// The exact coordinates of crossing `p`, made on first use.
+    fn exact_crossing(&self, p: &SweepPoint) -> &Fraction {
+        let c = &self.crossings[p.crossing as usize];
+        c.exact
+            .get_or_init(|| Fraction::crossing(&c.lines[0], &c.lines[1]))
     }
 
     fn error(p: &SweepPoint, axis: usize) -> f64 {
@@ -362,6 +410,7 @@ impl Exact {
             let [ax, ay, bx, by] =
                 [line.a[0], line.a[1], line.b[0], line.b[1]].map(Dyadic::from_f64);
             let (dx, dy) = (&bx - &ax, &by - &ay);
+            let c = self.exact_crossing(p);
             let (px, py) = (&c.x - &(&ax * &c.den), &c.y - &(&ay * &c.den));
             (&(&dx * &py) - &(&dy * &px)).sign()
         })
@@ -382,27 +431,17 @@ impl Exact {
     }
 
     /// The point where the lines of `l` and `m` cross. The caller has established that they are not parallel.
+    /// Its coordinates are rounded by float arithmetic where that is proven right (see [`estimate`]), else from
+    /// the exact ones, which are then kept.
     pub fn crossing(&mut self, l: &Line, m: &Line) -> SweepPoint {
-        let r = |v: [f64; 2]| [Dyadic::from_f64(v[0]), Dyadic::from_f64(v[1])];
-        let ([a1x, a1y], [b1x, b1y], [a2x, a2y], [b2x, b2y]) = (r(l.a), r(l.b), r(m.a), r(m.b));
-        let (d1x, d1y) = (&b1x - &a1x, &b1y - &a1y);
-        let (d2x, d2y) = (&b2x - &a2x, &b2y - &a2y);
-        // The crossing is a1 + d1 · t / den with t = (a2 - a1) × d2 and den = d1 × d2.
-        let mut den = &(&d1x * &d2y) - &(&d1y * &d2x);
-        let mut t = &(&(&a2x - &a1x) * &d2y) - &(&(&a2y - &a1y) * &d2x);
-        debug_assert!(!den.m.is_zero(), "crossing of parallel lines");
-        if den.m.is_negative() {
-            (den, t) = (-&den, -&t);
-        }
-        let x = &(&a1x * &den) + &(&d1x * &t);
-        let y = &(&a1y * &den) + &(&d1y * &t);
-        let ((ax, x_exact), (ay, y_exact)) = (x.divide_to_f64(&den), y.divide_to_f64(&den));
-        let (approx, representable) = ([ax, ay], [x_exact, y_exact]);
+        let exact = OnceCell::new();
+        let (approx, representable) = estimate::rounded_crossing(l, m).unwrap_or_else(|| {
+            let fraction = exact.get_or_init(|| Fraction::crossing(l, m));
+            fraction.rounded()
+        });
         self.crossings.push(Crossing {
-            x,
-            y,
-            den,
             lines: [*l, *m],
+            exact,
         });
         SweepPoint {
             approx,
@@ -496,6 +535,107 @@ mod tests {
                 "case {i}"
             );
         }
+    }
+
+    #[test]
+    fn float_rounding_of_crossings_agrees_with_exact_rounding() {
+        // Crossings of many kinds of lines: real-looking coordinates with short edges (which the float estimate
+        // must nearly always round), and integer, tiny, huge, axis-parallel and nearly parallel ones, whose
+        // crossings are often exactly on floats or on midpoints between them (which it must leave alone).
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut random = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut estimated = [0usize; 6];
+        let mut tried = [0usize; 6];
+        for i in 0..60_000 {
+            let kind = i % 6;
+            let snap = |p: [f64; 2]| match kind {
+                1 => p.map(|v| (v * 16.0).floor()),
+                2 => p.map(|v| (v * 1024.0).floor() * 2f64.powi(-40)),
+                3 => p.map(|v| (v * 1e9).floor() + 1e9),
+                _ => p,
+            };
+            let mut point = |scale: f64, offset: f64| {
+                snap([offset + random() * scale, offset + random() * scale])
+            };
+            let (scale, offset) = if kind == 0 {
+                (360.0, -180.0)
+            } else {
+                (1.0, 0.0)
+            };
+            let [a1, b1, a2, b2, short] = [(); 5].map(|_| point(scale, offset));
+            let mut l = Line { a: a1, b: b1 };
+            let mut m = Line { a: a2, b: b2 };
+            if kind == 0 || kind == 4 {
+                // A short edge near the first one, as a coastline's against a grid's or its own.
+                m.a = [
+                    a1[0] + (short[0] - offset) / scale - 0.5,
+                    a1[1] + (short[1] - offset) / scale - 0.5,
+                ];
+                l.b = [
+                    a1[0] + (b2[0] - offset) / scale * 0.5,
+                    a1[1] + (b2[1] - offset) / scale - 0.5,
+                ];
+            }
+            if kind == 4 {
+                m.b[0] = m.a[0]; // vertical
+            }
+            if kind == 5 {
+                // Nearly parallel: crossing the first one in its middle at an angle of about 1e-12 or less.
+                let (mid, dir) = (
+                    [(a1[0] + b1[0]) / 2.0, (a1[1] + b1[1]) / 2.0],
+                    [b1[0] - a1[0], b1[1] - a1[1]],
+                );
+                let tilt = 1e-12 * random().powi(8);
+                m.a = [
+                    mid[0] - 0.3 * dir[0] - tilt * dir[1],
+                    mid[1] - 0.3 * dir[1] + tilt * dir[0],
+                ];
+                m.b = [
+                    mid[0] + 0.3 * dir[0] + tilt * dir[1],
+                    mid[1] + 0.3 * dir[1] - tilt * dir[0],
+                ];
+            }
+            if l.a == l.b
+                || m.a == m.b
+                || Exact::default().cross_directions(&l, &m) == Ordering::Equal
+            {
+                continue;
+            }
+            // As in the sweep, only segments that properly cross.
+            let exact_predicates = Exact::default();
+            let side =
+                |line: &Line, p: [f64; 2]| exact_predicates.orient(line, &SweepPoint::input(p));
+            if side(&l, m.a) == side(&l, m.b) || side(&m, l.a) == side(&m, l.b) {
+                continue;
+            }
+            tried[kind] += 1;
+            let (exact, exactly) = Fraction::crossing(&l, &m).rounded();
+            if let Some((approx, representable)) = estimate::rounded_crossing(&l, &m) {
+                estimated[kind] += 1;
+                assert_eq!(approx, exact, "kind {kind}: {l:?} × {m:?}");
+                for axis in 0..2 {
+                    assert!(
+                        !representable[axis] || exactly[axis],
+                        "kind {kind}: {l:?} × {m:?}"
+                    );
+                }
+            }
+        }
+        assert!(
+            estimated[0] * 100 >= tried[0] * 99,
+            "real-looking crossings rounded by floats: {} of {}",
+            estimated[0],
+            tried[0]
+        );
+        assert!(
+            estimated[4] * 10 >= tried[4] * 9,
+            "{estimated:?} of {tried:?}"
+        );
     }
 
     #[test]
