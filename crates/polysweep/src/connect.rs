@@ -139,24 +139,53 @@ pub(crate) fn clearance(magnitude: f64) -> f64 {
 /// vertex of the result. An edge that passes that close to a crossing point crosses its edges there too, or ends
 /// there, so it has a vertex in the cluster as well; far from any cluster, rounding moves nothing across anything.
 pub(crate) fn rounding_may_matter(vertices: &[SweepPoint]) -> bool {
-    // Sweep order is x order, and rounding is monotone, so the neighbours in x are next to each other.
+    if vertices.iter().all(SweepPoint::is_input) {
+        return false;
+    }
+    // Sweep order is x order and rounding is monotone, so the vertices within a few ulps of a point in x are a
+    // range of the sweep order, found by halving. A short range is scanned. In a long one (a grid's column of
+    // thousands of vertices at one x), vertices of one x come in y order (the sweep's), in runs found once over
+    // the whole order, and each run is searched by halving too.
+    let coordinate = |j: usize, axis: usize| vertices[j].approx[axis];
+    let mut runs: Vec<usize> = Vec::new();
     let ulp = |v: f64| clearance(v.abs());
     (0..vertices.len())
         .filter(|&i| !vertices[i].is_input())
         .any(|i| {
             let [x, y] = vertices[i].approx;
             let (dx, dy) = (ulp(x), ulp(y));
-            let near = |j: &usize| {
-                let [u, v] = vertices[*j].approx;
-                (u - x).abs() <= dx && (v - y).abs() <= dy
-            };
-            let before = (0..i)
-                .rev()
-                .take_while(|&j| vertices[j].approx[0] >= x - dx);
-            let after = (i + 1..vertices.len()).take_while(|&j| vertices[j].approx[0] <= x + dx);
-            before.chain(after).any(|j| near(&j))
+            let start = vertices.partition_point(|v| v.approx[0] < x - dx);
+            let end = vertices.partition_point(|v| v.approx[0] <= x + dx);
+            let near_in_y = |j: usize| j != i && (coordinate(j, 1) - y).abs() <= dy;
+            if end - start <= LONG_RANGE {
+                return (start..end).any(near_in_y);
+            }
+            if runs.is_empty() {
+                runs = (0..vertices.len())
+                    .filter(|&j| {
+                        j == 0
+                            || coordinate(j, 0) != coordinate(j - 1, 0)
+                            || coordinate(j, 1) < coordinate(j - 1, 1)
+                    })
+                    .chain([vertices.len()])
+                    .collect();
+            }
+            let first_run = runs.partition_point(|&r| r <= start) - 1;
+            runs[first_run..]
+                .windows(2)
+                .take_while(|run| run[0] < end)
+                .any(|run| {
+                    let (from, to) = (run[0].max(start), run[1].min(end));
+                    let in_run = &vertices[from..to];
+                    let below = from + in_run.partition_point(|v| v.approx[1] < y - dy);
+                    let above = from + in_run.partition_point(|v| v.approx[1] <= y + dy);
+                    (below..above).any(near_in_y)
+                })
         })
 }
+
+/// Ranges of vertices longer than this are searched run by run rather than scanned (see `rounding_may_matter`).
+const LONG_RANGE: usize = 64;
 
 /// Output vertex of each sweep vertex on a result edge: its coordinates rounded to f64, where distinct exact points
 /// that round to the same floats become one vertex. Vertices on no result edge (most of them, when little of the
@@ -355,4 +384,82 @@ pub(crate) fn connect(
         }
     }
     MultiPolygon(polygons)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exact::Line;
+
+    #[test]
+    fn rounding_check_finds_exactly_the_points_within_a_few_ulps_of_a_crossing() {
+        // Columns of input vertices (a grid's, longer than `LONG_RANGE`), crossings on the columns and near them,
+        // and input vertices put a few ulps from some crossings: the search must agree with comparing every pair.
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut random = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut outcomes = [0; 2];
+        for trial in 0..400 {
+            let mut exact = Exact::default();
+            let columns = [1.5, 2.0, 3.25];
+            let mut vertices: Vec<SweepPoint> = Vec::new();
+            for &x in &columns {
+                for k in 0..100 {
+                    vertices.push(SweepPoint::input([x, k as f64 * 0.05]));
+                }
+            }
+            for _ in 0..20 {
+                let x = columns[(random() * 3.0) as usize];
+                let slanted = Line {
+                    a: [x - random(), random() * 5.0],
+                    b: [x + random(), random() * 5.0],
+                };
+                let near_column = Line {
+                    a: [x + (random() - 0.5) * 1e-3, -1.0],
+                    b: [x + (random() - 0.5) * 1e-3, 6.0],
+                };
+                let column = Line {
+                    a: [x, -1.0],
+                    b: [x, 6.0],
+                };
+                let crossing = exact.crossing(
+                    &slanted,
+                    if random() < 0.5 {
+                        &column
+                    } else {
+                        &near_column
+                    },
+                );
+                vertices.push(crossing);
+                if trial % 2 == 0 && random() < 0.1 {
+                    // An input vertex a few ulps away in each coordinate (some within the clearance, some not).
+                    let nudge = |v: f64| {
+                        let steps = (random() * 12.0) as i64 - 6;
+                        f64::from_bits((v.to_bits() as i64 + steps) as u64)
+                    };
+                    vertices.push(SweepPoint::input(crossing.approx.map(nudge)));
+                }
+            }
+            vertices.sort_by(|p, q| exact.cmp_points(p, q));
+            vertices.dedup_by(|p, q| exact.cmp_points(p, q) == Ordering::Equal);
+            let every_pair = (0..vertices.len())
+                .filter(|&i| !vertices[i].is_input())
+                .any(|i| {
+                    let [x, y] = vertices[i].approx;
+                    (0..vertices.len()).any(|j| {
+                        let [u, v] = vertices[j].approx;
+                        j != i
+                            && (u - x).abs() <= clearance(x.abs())
+                            && (v - y).abs() <= clearance(y.abs())
+                    })
+                });
+            assert_eq!(rounding_may_matter(&vertices), every_pair, "trial {trial}");
+            outcomes[usize::from(every_pair)] += 1;
+        }
+        assert!(outcomes[0] > 50 && outcomes[1] > 50, "{outcomes:?}");
+    }
 }
