@@ -395,13 +395,7 @@ mod tests {
     fn rounding_check_finds_exactly_the_points_within_a_few_ulps_of_a_crossing() {
         // Columns of input vertices (a grid's, longer than `LONG_RANGE`), crossings on the columns and near them,
         // and input vertices put a few ulps from some crossings: the search must agree with comparing every pair.
-        let mut state = 0x2545_f491_4f6c_dd1du64;
-        let mut random = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut random = crate::test_random::unit(0x2545_f491_4f6c_dd1d);
         let mut outcomes = [0; 2];
         for trial in 0..400 {
             let mut exact = Exact::default();

@@ -488,13 +488,7 @@ mod tests {
     fn division_rounds_to_nearest_like_the_rational_path() {
         // Quotients of products of floats, of every size the crossings make, against BigRational's rounding (a
         // different algorithm), including exact quotients and ties.
-        let mut state = 0x2545_f491_4f6c_dd1du64;
-        let mut random = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut random = crate::test_random::bits(0x2545_f491_4f6c_dd1d);
         let float = |bits: u64, scale: i32| {
             let mantissa = (bits >> 11) as f64 / (1u64 << 53) as f64 + 0.5;
             let sign = if bits & 1 == 1 { -1.0 } else { 1.0 };
@@ -542,13 +536,7 @@ mod tests {
         // Crossings of many kinds of lines: real-looking coordinates with short edges (which the float estimate
         // must nearly always round), and integer, tiny, huge, axis-parallel and nearly parallel ones, whose
         // crossings are often exactly on floats or on midpoints between them (which it must leave alone).
-        let mut state = 0x9e37_79b9_7f4a_7c15u64;
-        let mut random = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut random = crate::test_random::unit(0x9e37_79b9_7f4a_7c15);
         let mut estimated = [0usize; 6];
         let mut tried = [0usize; 6];
         for i in 0..60_000 {

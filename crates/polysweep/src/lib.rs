@@ -56,6 +56,27 @@ pub mod subdivide;
 pub mod sweep;
 pub mod validate;
 
+/// Seeded random numbers for the unit tests (xorshift): reproducible, and no dependency.
+#[cfg(test)]
+mod test_random {
+    /// Random 64-bit words.
+    pub fn bits(seed: u64) -> impl FnMut() -> u64 {
+        let mut state = seed;
+        move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        }
+    }
+
+    /// Random floats in [0, 1).
+    pub fn unit(seed: u64) -> impl FnMut() -> f64 {
+        let mut bits = bits(seed);
+        move || (bits() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
 #[doc = include_str!("../../../docs/robustness.md")]
 pub mod robustness {}
 
