@@ -216,7 +216,8 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
     let mut keys: Vec<(u64, u32)> = (vertices.iter().enumerate())
         .map(|(v, ends)| (ordered_bits(point(ends[0])[0]), v as u32))
         .collect();
-    keys.sort_unstable();
+    // By the key alone (cheaper than by the pair): keys that tie are ordered again below.
+    keys.sort_unstable_by_key(|&(x, _)| x);
     let mut order: Vec<u32> = Vec::with_capacity(2 * edges.len());
     let mut at_one_point = Vec::new();
     for same_x in keys.chunk_by_mut(|a, b| a.0 == b.0) {
@@ -225,7 +226,7 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
             for key in same_x.iter_mut() {
                 key.0 = ordered_bits(point(vertices[key.1 as usize][0])[1]);
             }
-            same_x.sort_unstable();
+            same_x.sort_unstable_by_key(|&(y, _)| y);
         }
         for same_point in same_x.chunk_by(|a, b| a.0 == b.0) {
             if let [vertex] = same_point {
