@@ -364,7 +364,7 @@ impl EventQueue {
 mod tests {
     use super::*;
     use crate::geometry::MultiPolygon;
-    use crate::input::{add_edges, Bounds};
+    use crate::input::add_edges;
 
     #[test]
     fn initial_events_come_in_event_order() {
@@ -396,8 +396,8 @@ mod tests {
             ring(&[[1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]]),
         ]);
         let mut edges = Vec::new();
-        add_edges(&mut edges, &subject, 0, &Bounds::EVERYWHERE);
-        add_edges(&mut edges, &clipping, 1, &Bounds::EVERYWHERE);
+        add_edges(&mut edges, &subject, 0, |_| true);
+        add_edges(&mut edges, &clipping, 1, |_| true);
         let exact = Exact::default();
         let events = initial_events(&edges, &exact);
         assert_eq!(events.len(), 2 * edges.len());

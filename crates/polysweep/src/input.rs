@@ -3,7 +3,7 @@
 use crate::error::{Error, Location};
 use crate::events::{InputEdge, Operand};
 use crate::exact::Line;
-use crate::geometry::{open_len, MultiPolygon, Point, Polygon};
+use crate::geometry::{open_len, MultiPolygon, Point};
 
 /// Largest coordinate magnitude accepted: 2^200. Within it (and above [`MIN_COORDINATE`]) the products formed by
 /// the exact predicates neither overflow nor underflow, which their proofs assume.
@@ -11,9 +11,12 @@ pub const MAX_COORDINATE: f64 = (1u128 << 100) as f64 * (1u128 << 100) as f64;
 /// Smallest non-zero coordinate magnitude accepted: 2^-200.
 pub const MIN_COORDINATE: f64 = 1.0 / MAX_COORDINATE;
 
-/// Checks every coordinate of `operand` (its index among the operation's operands is `index`).
-pub(crate) fn check(index: usize, operand: &MultiPolygon) -> Result<(), Error> {
+/// Checks every coordinate of `operand` (its index among the operation's operands is `index`), and returns the box
+/// of each of its polygons (of all its rings: a hole may reach outside its shell), made on the same pass.
+pub(crate) fn check(index: usize, operand: &MultiPolygon) -> Result<Vec<Bounds>, Error> {
+    let mut boxes = Vec::with_capacity(operand.0.len());
     for (polygon, p) in operand.0.iter().enumerate() {
+        let mut bounds = Bounds::EMPTY;
         for (ring, r) in p.rings().enumerate() {
             for (vertex, point) in r.iter().enumerate() {
                 let at = Location {
@@ -31,10 +34,12 @@ pub(crate) fn check(index: usize, operand: &MultiPolygon) -> Result<(), Error> {
                         return Err(Error::CoordinateOutOfRange { at, value });
                     }
                 }
+                bounds = bounds.with(point);
             }
         }
+        boxes.push(bounds);
     }
-    Ok(())
+    Ok(boxes)
 }
 
 /// An axis-aligned box, closed; the empty box has min > max.
@@ -50,48 +55,47 @@ impl Bounds {
         max: [f64::INFINITY; 2],
     };
 
-    pub fn of<'a>(points: impl IntoIterator<Item = &'a Point>) -> Bounds {
-        let empty = Bounds {
-            min: [f64::INFINITY; 2],
-            max: [f64::NEG_INFINITY; 2],
-        };
-        points.into_iter().fold(empty, |b, p| Bounds {
-            min: [b.min[0].min(p.x), b.min[1].min(p.y)],
-            max: [b.max[0].max(p.x), b.max[1].max(p.y)],
-        })
+    pub const EMPTY: Bounds = Bounds {
+        min: [f64::INFINITY; 2],
+        max: [f64::NEG_INFINITY; 2],
+    };
+
+    fn with(self, p: &Point) -> Bounds {
+        Bounds {
+            min: [self.min[0].min(p.x), self.min[1].min(p.y)],
+            max: [self.max[0].max(p.x), self.max[1].max(p.y)],
+        }
     }
 
-    pub fn of_polygons(polygons: &MultiPolygon) -> Bounds {
-        Bounds::of(polygons.0.iter().flat_map(|p| p.rings()).flatten())
+    /// The box around `boxes`.
+    pub fn around(boxes: &[Bounds]) -> Bounds {
+        boxes.iter().fold(Bounds::EMPTY, |b, c| Bounds {
+            min: [b.min[0].min(c.min[0]), b.min[1].min(c.min[1])],
+            max: [b.max[0].max(c.max[0]), b.max[1].max(c.max[1])],
+        })
     }
 
     pub fn max_x(&self) -> f64 {
         self.max[0]
     }
 
-    fn meets(&self, other: &Bounds) -> bool {
+    pub fn meets(&self, other: &Bounds) -> bool {
         (0..2).all(|k| self.min[k] <= other.max[k] && other.min[k] <= self.max[k])
     }
 }
 
-/// Appends the edges of every ring of `polygons` whose polygon's box (of all its rings) meets `region`. Edges of
-/// zero length are skipped; a ring with fewer than three vertices still gives its edges, which cancel each other
-/// (§7.2).
-///
-/// Leaving out polygons outside `region` is exact, not a heuristic: a ring's winding number is 0 outside its box, so
-/// within `region` the operand's interior, under either fill rule, is that of the polygons kept.
+/// Appends the edges of every ring of the polygons of `polygons` that `keep` (given a polygon's index) keeps.
+/// Edges of zero length are skipped; a ring with fewer than three vertices still gives its edges, which cancel each
+/// other (§7.2).
 pub(crate) fn add_edges(
     edges: &mut Vec<InputEdge>,
     polygons: &MultiPolygon,
     operand: Operand,
-    region: &Bounds,
+    keep: impl Fn(usize) -> bool,
 ) {
-    // The box of all the polygon's rings, not only its exterior: a hole may reach outside its shell.
-    let near = |p: &&Polygon| {
-        *region == Bounds::EVERYWHERE || Bounds::of(p.rings().flatten()).meets(region)
-    };
     edges.reserve(polygons.vertex_count()); // at most one edge per vertex
-    for ring in polygons.0.iter().filter(near).flat_map(|p| p.rings()) {
+    let kept = polygons.0.iter().enumerate().filter(|&(p, _)| keep(p));
+    for ring in kept.flat_map(|(_, p)| p.rings()) {
         let n = open_len(ring);
         for i in 0..n {
             let (from, to) = (ring[i], ring[(i + 1) % n]);

@@ -128,44 +128,47 @@ pub fn overlay_with_stats(
     clipping: &MultiPolygon,
     options: &Options,
 ) -> Result<(MultiPolygon, Stats), Error> {
-    input::check(0, subject)?;
-    input::check(1, clipping)?;
+    let (subject_boxes, clipping_boxes) = (input::check(0, subject)?, input::check(1, clipping)?);
     // An intersection lies within both operands' boxes and a difference within the subject's: polygons outside
     // them cannot change the result and are not swept. (Not in the paper; it is what makes clipping a small area out
-    // of a large data set cost little more than the sort of the polygons kept.)
-    let (subject_box, clipping_box) = (Bounds::of_polygons(subject), Bounds::of_polygons(clipping));
+    // of a large data set cost little more than the sort of the polygons kept.) Leaving them out is exact, not a
+    // heuristic: a ring's winding number is 0 outside its box, so within the region the operand's interior, under
+    // either fill rule, is that of the polygons kept.
+    let (subject_box, clipping_box) = (
+        Bounds::around(&subject_boxes),
+        Bounds::around(&clipping_boxes),
+    );
     let (subject_region, clipping_region) = match operation {
         Operation::Intersection => (clipping_box, subject_box),
         Operation::Difference => (Bounds::EVERYWHERE, subject_box),
         Operation::Union | Operation::Xor => (Bounds::EVERYWHERE, Bounds::EVERYWHERE),
     };
     let mut edges = Vec::new();
-    input::add_edges(&mut edges, subject, 0, &subject_region);
-    input::add_edges(&mut edges, clipping, 1, &clipping_region);
-    let stop_x = stop_x(operation, subject, [clipping]);
+    input::add_edges(&mut edges, subject, 0, |p| {
+        subject_boxes[p].meets(&subject_region)
+    });
+    input::add_edges(&mut edges, clipping, 1, |p| {
+        clipping_boxes[p].meets(&clipping_region)
+    });
     Ok(sweep(
         edges,
         Selection::Pair {
             operation,
             fill_rule: options.fill_rule,
         },
-        stop_x,
+        stop_x(operation, &[subject_box, clipping_box]),
     ))
 }
 
 /// Past this x the result can have no edge, so the sweep stops there (the end of the subject for a difference,
-/// of the operand that ends first for an intersection).
-fn stop_x<'a>(
-    operation: Operation,
-    first: &MultiPolygon,
-    others: impl IntoIterator<Item = &'a MultiPolygon>,
-) -> f64 {
+/// of the operand that ends first for an intersection), given the box of every operand.
+fn stop_x(operation: Operation, boxes: &[Bounds]) -> f64 {
     match operation {
-        Operation::Intersection => others
-            .into_iter()
-            .map(|m| Bounds::of_polygons(m).max_x())
-            .fold(Bounds::of_polygons(first).max_x(), f64::min),
-        Operation::Difference => Bounds::of_polygons(first).max_x(),
+        Operation::Intersection => boxes
+            .iter()
+            .map(Bounds::max_x)
+            .fold(f64::INFINITY, f64::min),
+        Operation::Difference => boxes[0].max_x(),
         Operation::Union | Operation::Xor => f64::INFINITY,
     }
 }
@@ -182,7 +185,7 @@ fn sweep(edges: Vec<InputEdge>, selection: Selection, stop_x: f64) -> (MultiPoly
     stats.input_edges = edges.len();
     while suspect && stats.repair_passes < MAX_REPAIR_PASSES {
         let mut edges = Vec::new();
-        input::add_edges(&mut edges, &result, 0, &Bounds::EVERYWHERE);
+        input::add_edges(&mut edges, &result, 0, |_| true);
         let repair = Selection::Count {
             operation: Operation::Union,
             operands: 1,
@@ -275,12 +278,13 @@ fn overlay_refs(
     operands: &[&MultiPolygon],
     options: &Options,
 ) -> Result<MultiPolygon, Error> {
+    let mut boxes = Vec::with_capacity(operands.len());
     for (index, operand) in operands.iter().enumerate() {
-        input::check(index, operand)?;
+        boxes.push(Bounds::around(&input::check(index, operand)?));
     }
-    let Some((first, rest)) = operands.split_first() else {
+    if operands.is_empty() {
         return Ok(MultiPolygon::default());
-    };
+    }
     let normalise = Selection::Pair {
         operation: Operation::Union,
         fill_rule: options.fill_rule,
@@ -288,10 +292,10 @@ fn overlay_refs(
     let mut edges = Vec::new();
     for (index, operand) in operands.iter().enumerate() {
         let mut own = Vec::new();
-        input::add_edges(&mut own, operand, 0, &Bounds::EVERYWHERE);
+        input::add_edges(&mut own, operand, 0, |_| true);
         let (valid, _) = sweep(own, normalise, f64::INFINITY);
         let slot = u8::from(operation == Operation::Difference && index > 0);
-        input::add_edges(&mut edges, &valid, slot, &Bounds::EVERYWHERE);
+        input::add_edges(&mut edges, &valid, slot, |_| true);
     }
     let in_slot_0 = if operation == Operation::Difference {
         1
@@ -302,12 +306,7 @@ fn overlay_refs(
         operation,
         operands: in_slot_0,
     };
-    Ok(sweep(
-        edges,
-        selection,
-        stop_x(operation, first, rest.iter().copied()),
-    )
-    .0)
+    Ok(sweep(edges, selection, stop_x(operation, &boxes)).0)
 }
 
 /// The union of all operands.
