@@ -217,31 +217,35 @@ impl<'a> Sweep<'a> {
     /// Rounding moves a constructed point by at most half an ulp, and an edge with such an end (even one made by a
     /// later split) by as much. So an event point can end up on the other side of a neighbouring edge only if it
     /// lies within a few ulps of it; `close_call` notes it, and the result is then swept again.
-    fn note_close_calls(&mut self, p: &SweepPoint, neighbours: [EventId; 2]) {
-        for e in neighbours.into_iter().filter(|&e| e != NONE) {
-            let line = self.input_edge(e).line;
-            let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
-            let cross = (p.approx[0] - line.a[0]) * dy - (p.approx[1] - line.a[1]) * dx;
-            // distance = |cross| / |d|, compared squared to avoid the square root.
-            let within =
-                |clearance: f64| cross * cross <= clearance * clearance * (dx * dx + dy * dy);
-            if !within(self.widest_clearance) {
-                continue;
-            }
-            let (a, b) = (self.point(e), self.other_point(e));
-            let magnitude = [a.approx, b.approx, p.approx]
-                .iter()
-                .flatten()
-                .fold(0.0f64, |m, v| m.max(v.abs()));
-            // A vertex of the edge moves with it.
-            if within(crate::connect::clearance(magnitude))
-                && ![a, b]
-                    .iter()
-                    .any(|q| self.exact.cmp_points(q, p) == Ordering::Equal)
-            {
-                self.close_call = true;
-            }
+    fn note_close_calls(&mut self, p: &SweepPoint, [below, above]: [EventId; 2]) {
+        if self.is_close_call(p, below) || self.is_close_call(p, above) {
+            self.close_call = true;
         }
+    }
+
+    /// Is `p` within a few ulps of the edge of left event `e` (`NONE`: no edge) without being one of its ends?
+    fn is_close_call(&self, p: &SweepPoint, e: EventId) -> bool {
+        if e == NONE {
+            return false;
+        }
+        let line = self.input_edge(e).line;
+        let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
+        let cross = (p.approx[0] - line.a[0]) * dy - (p.approx[1] - line.a[1]) * dx;
+        // distance = |cross| / |d|, compared squared to avoid the square root.
+        let within = |clearance: f64| cross * cross <= clearance * clearance * (dx * dx + dy * dy);
+        if !within(self.widest_clearance) {
+            return false;
+        }
+        let (a, b) = (self.point(e), self.other_point(e));
+        let magnitude = [a.approx, b.approx, p.approx]
+            .iter()
+            .flatten()
+            .fold(0.0f64, |m, v| m.max(v.abs()));
+        // A vertex of the edge moves with it.
+        within(crate::connect::clearance(magnitude))
+            && ![a, b]
+                .iter()
+                .any(|q| self.exact.cmp_points(q, p) == Ordering::Equal)
     }
 
     /// What the status order reads of the edge of left event `e`.
