@@ -24,15 +24,26 @@ use std::cmp::Ordering::Equal;
 impl Sweep<'_> {
     /// possibleInter (Fig. 5) of two edges, given as left events, `lower` below `upper` in S.
     pub(crate) fn possible_inter(&mut self, lower: EventId, upper: EventId) {
-        // Read as needed: most pairs are told apart by the first two tests, without `lower`'s line.
-        let l2 = self.input_edge(upper).line;
         let (a1, b1) = (self.point(lower), self.other_point(lower));
+        let (a2, b2) = (self.point(upper), self.other_point(upper));
+        // Edges whose ranges of y lie apart cannot meet (not in the paper: a cheaper test that tells most neighbours
+        // apart). It is exact: correct rounding is monotone, so approximations strictly apart are exact values
+        // strictly apart.
+        let y_range = |a: &SweepPoint, b: &SweepPoint| {
+            let (u, v) = (a.approx[1], b.approx[1]);
+            (u.min(v), u.max(v))
+        };
+        let ((low1, high1), (low2, high2)) = (y_range(&a1, &b1), y_range(&a2, &b2));
+        if high1 < low2 || high2 < low1 {
+            return;
+        }
+        // Read as needed: most other pairs are told apart by the first two tests, without `lower`'s line.
+        let l2 = self.input_edge(upper).line;
         let (s1, s2) = (self.exact.orient(&l2, &a1), self.exact.orient(&l2, &b1));
         if s1 == s2 && s1 != Equal {
             return; // `lower` lies on one side of `upper`'s line
         }
         let l1 = self.input_edge(lower).line;
-        let (a2, b2) = (self.point(upper), self.other_point(upper));
         let (s3, s4) = (self.exact.orient(&l1, &a2), self.exact.orient(&l1, &b2));
         if s3 == s4 && s3 != Equal {
             return;
