@@ -10,7 +10,8 @@
 // Each engine runs in a worker thread of its own, so that a run past the time limit can be stopped (the worker is
 // terminated and a new one started) and a crash is recorded instead of ending the script. Per (engine, workload):
 // one warm-up run, then 5 timed runs or more for fast pairs (up to 15, about 3 s in all), 3 when the warm-up took
-// over 10 s, 1 over 20 s; a run over 60 s stops the pair, recorded as skipped, and the engine's larger
+// over 10 s, 1 over 20 s, the engines' runs taken in turns (round by round) so that they share the machine's
+// drifts in speed; a run over 60 s stops the pair, recorded as skipped, and the engine's larger
 // intersections are skipped too (their inputs only grow). Inputs are fresh copies for every run (made before the
 // clock starts, so no engine sees what an earlier run did to them), and the worker's heap is collected before the
 // clock starts. Timed: the engine's conversions in, the operation, its conversions out. Not timed: the area
@@ -30,6 +31,7 @@ import {
 } from './data.mjs';
 import { CLIPPER1_SCALE, CLIPPER2_PRECISION, ENGINES, NOTES, PACKAGE_OF, loadEngine, packageVersion } from './engines.mjs';
 
+const tooSlowAt = new Map(); // engine -> N at which an intersection went past the limit
 let LIMIT_MS = 60_000; // a run longer than this is stopped and the pair skipped (--limit SECONDS)
 const SLOW_MS = 10_000; // warm-up above this: fewer timed runs
 const AGREEMENT = 1e-6; // relative area difference allowed against polysweep
@@ -162,6 +164,14 @@ function median(values) {
   return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
 }
 
+/** Records that a pair's warm-up or a timed run failed or went past the limit; the pair runs no more. */
+function fail(pair, error) {
+  pair.record.status = error.timeout || error.skip ? 'skipped' : 'failed';
+  pair.record.error = error.message;
+  pair.count = 0;
+  if (error.timeout && pair.record.operation === 'intersection') tooSlowAt.set(pair.engine, pair.record.squares);
+}
+
 function timedRuns(warmupMs, quick) {
   if (quick) return 3;
   if (warmupMs > 2 * SLOW_MS) return 1;
@@ -194,36 +204,48 @@ async function main() {
   for (const n of new Set(workloads.map((w) => w.n))) sources[n] = loadSquares(n).source;
 
   const hosts = new Map(args.engines.map((e) => [e, new EngineHost(e)]));
-  const tooSlowAt = new Map(); // engine -> N at which an intersection went past the limit
   const runs = [];
   const started = Date.now();
 
   for (const { operation, n } of workloads) {
     log(`\n${operation} land × ${n} squares (${sources[n]})`);
-    let psArea = null;
+    // Every engine's warm-up first, then the timed runs in rounds, one run of each engine per round, so that a
+    // change in the machine's speed over the minutes of a workload falls on all engines alike.
+    const pairs = [];
     for (const engine of args.engines) {
       const record = { engine, operation, squares: n, median_ms: null, area: null, status: 'ok', runs: 0 };
-      const host = hosts.get(engine);
+      const pair = { engine, record, times: [], count: 0 };
+      pairs.push(pair);
       try {
         if (operation === 'intersection' && tooSlowAt.has(engine)) {
           throw Object.assign(new Error(`a run took more than ${LIMIT_MS / 1000} s at ${tooSlowAt.get(engine)} squares`), { skip: true });
         }
-        const warm = await host.run({ operation, n, measure: true });
+        const warm = await hosts.get(engine).run({ operation, n, measure: true });
         record.area = warm.area;
         record.vertices_out = warm.vertices;
         record.warmup_ms = warm.ms;
-        const count = timedRuns(warm.ms, args.quick);
-        const times = [];
-        for (let i = 0; i < count; i++) times.push((await host.run({ operation, n, measure: false })).ms);
+        pair.count = timedRuns(warm.ms, args.quick);
+      } catch (error) {
+        fail(pair, error);
+      }
+    }
+    while (pairs.some((p) => p.times.length < p.count)) {
+      for (const pair of pairs.filter((p) => p.times.length < p.count)) {
+        try {
+          pair.times.push((await hosts.get(pair.engine).run({ operation, n, measure: false })).ms);
+        } catch (error) {
+          fail(pair, error);
+        }
+      }
+    }
+    let psArea = null;
+    for (const { engine, record, times } of pairs) {
+      if (record.status === 'ok') {
         record.runs = times.length;
         record.median_ms = median(times);
         record.min_ms = Math.min(...times);
         record.max_ms = Math.max(...times);
         record.times_ms = times.map((t) => Math.round(t * 1000) / 1000);
-      } catch (error) {
-        record.status = error.timeout || error.skip ? 'skipped' : 'failed';
-        record.error = error.message;
-        if (error.timeout && operation === 'intersection') tooSlowAt.set(engine, n);
       }
       if (engine === 'polysweep' && record.status === 'ok') psArea = record.area;
       const reference = REFERENCE_AREAS[operation]?.[n];

@@ -1,8 +1,8 @@
 //! The paper's Table 1 on real data, native: Natural Earth land (59,212 vertices) against grids of N squares,
 //! polysweep beside i_overlay, geo's BooleanOps and Clipper2 (the C++ library through the `clipper2` crate), in one
 //! process and one run. Each engine gets its input already in its own types; the time is the operation alone.
-//! Warm-up once, then several runs; medians. Result areas are checked against each other and against the
-//! reference areas of tests/data/README.md. Also the floor: sorting the 2n event points.
+//! Warm-up once, then several runs taken in turns with the other engines; medians. Result areas are checked against
+//! each other and against the reference areas of tests/data/README.md. Also the floor: sorting the 2n event points.
 //!
 //! Writes target/bench/native.json, and the square grids of every N as GeoJSON (target/bench/squares-N.json) for
 //! the wasm benchmark (web/bench/wasm.mjs). `cargo run --release -p polysweep-bench`.
@@ -80,19 +80,30 @@ fn squares(n: usize) -> Coordinates {
         .collect()
 }
 
-/// Median and fastest time of the timed runs, and the result area.
-fn median_ms(mut run: impl FnMut() -> f64) -> (f64, f64, f64) {
-    let area = run(); // warm-up
+/// Timed runs of each engine: a warm-up each (which gives the result area), then the runs in rounds, one of every
+/// engine per round, so that a change in the machine's speed over the seconds of a workload falls on all engines
+/// alike. Returns each engine's times, sorted, and area.
+fn timed_rounds(engines: &mut [&mut dyn FnMut() -> f64]) -> Vec<(Vec<f64>, f64)> {
+    let areas: Vec<f64> = engines.iter_mut().map(|run| run()).collect();
     let runs = std::env::var("BENCH_RUNS")
         .map_or(RUNS, |r| r.parse().expect("BENCH_RUNS: a number of runs"));
-    let mut times: Vec<f64> = (0..runs.max(1))
-        .map(|_| {
+    let mut times = vec![Vec::with_capacity(runs); engines.len()];
+    for _ in 0..runs.max(1) {
+        for (run, times) in engines.iter_mut().zip(&mut times) {
             let start = Instant::now();
             std::hint::black_box(run());
-            start.elapsed().as_secs_f64() * 1e3
-        })
-        .collect();
-    times.sort_by(f64::total_cmp);
+            times.push(start.elapsed().as_secs_f64() * 1e3);
+        }
+    }
+    for t in &mut times {
+        t.sort_by(f64::total_cmp);
+    }
+    times.into_iter().zip(areas).collect()
+}
+
+/// Median and fastest time of one engine's timed runs (see [`timed_rounds`]), and its result area.
+fn median_ms(run: &mut dyn FnMut() -> f64) -> (f64, f64, f64) {
+    let (times, area) = timed_rounds(&mut [run]).remove(0);
     (times[times.len() / 2], times[0], area)
 }
 
@@ -173,6 +184,9 @@ impl Filter {
     }
 }
 
+/// One engine's run of a workload, returning the result's area.
+type Engine<'a> = Box<dyn FnMut() -> f64 + 'a>;
+
 fn run_all(
     operation: &str,
     land: &Inputs,
@@ -186,7 +200,7 @@ fn run_all(
         "union" => (Operation::Union, OverlayRule::Union),
         _ => (Operation::Difference, OverlayRule::Difference),
     };
-    let engines: Vec<(&str, Box<dyn FnMut() -> f64>)> = vec![
+    let engines: Vec<(&str, Engine)> = vec![
         (
             "polysweep",
             Box::new(|| {
@@ -230,8 +244,13 @@ fn run_all(
             }),
         ),
     ];
-    for (engine, mut f) in engines.into_iter().filter(|(e, _)| filter.engine(e)) {
-        let (ms, fastest, area) = median_ms(&mut f);
+    let (names, mut runs): (Vec<&str>, Vec<Engine>) = engines
+        .into_iter()
+        .filter(|(e, _)| filter.engine(e))
+        .unzip();
+    let mut runs: Vec<&mut dyn FnMut() -> f64> = runs.iter_mut().map(|r| &mut **r as _).collect();
+    for (engine, (times, area)) in names.into_iter().zip(timed_rounds(&mut runs)) {
+        let (ms, fastest) = (times[times.len() / 2], times[0]);
         println!("{operation:>12} {n:>6} squares  {engine:<10} {ms:>9.2} ms  (fastest {fastest:>8.2})  area {area:.6}");
         out.push(json!({ "engine": engine, "operation": operation, "squares": n, "median_ms": ms, "area": area }));
     }
@@ -282,7 +301,7 @@ fn main() {
             .flatten()
             .flat_map(|r| r.windows(2).flat_map(|w| [w[0], w[1]]))
             .collect();
-        let (ms, _, _) = median_ms(|| {
+        let (ms, _, _) = median_ms(&mut || {
             let mut p = points.clone();
             p.sort_unstable_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
             p[0][0]
