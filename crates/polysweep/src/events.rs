@@ -2,8 +2,9 @@
 //!
 //! An event is one endpoint of an edge and stands for the edge (Fig. 8): `point`, the `other` endpoint, `left`,
 //! and, through its input segment, the operand (the paper's `pl`). The paper's `inOut` and `inside` flags are
-//! generalised to winding counts (`coverage_above`, see [`crate::select`]); its edge `type` of §7.2 is replaced by
-//! merging overlapping edges (see [`crate::subdivide`]).
+//! generalised to winding counts (`coverage_above`, see [`crate::select`]), kept with the edge's node in S while
+//! the edge is there (the only time they are read); its edge `type` of §7.2 is replaced by merging overlapping
+//! edges (see [`crate::subdivide`]).
 //!
 //! Departures from the paper:
 //! - Every edge remembers the input segment it lies on (`segment`, whose line the sweep reads from the input
@@ -30,39 +31,39 @@ pub(crate) struct SweepEvent {
     /// The point of `other`, kept here because the sweep reads both ends of an edge together and `other` is
     /// usually far away in memory.
     pub other_point: SweepPoint,
-    pub left: bool,
-    /// The edge is vertical (§7.1), as its input segment is: kept here (in the padding) because the flags of Fig.
-    /// 9 ask it of the edge and of the edge below, which would otherwise cost two reads of the input edges.
-    pub vertical: bool,
-    /// Index of the input segment this edge lies on, among the sweep's input edges, which give its line (oriented
-    /// in sweep order) and its operand; also a stable tie-break shared by all fragments of one input edge.
-    pub segment: u32,
+    /// The input segment and the side, as one word: the events are the sweep's largest array, and this keeps an
+    /// event to 72 bytes (see [`Self::segment`] and [`Self::left`]).
+    segment_and_side: u32,
     /// How crossing this edge upwards (or, when vertical, from right to left) changes the winding number of each
     /// operand. Overlapping edges merged into this one add theirs (§7.2).
     pub winding: [i32; 2],
-    /// Left events only: winding numbers of the region just above the edge (§4, Fig. 9).
-    pub coverage_above: [i32; 2],
-    /// Left events only: the edge is part of the result's boundary (§4, Fig. 10).
-    pub in_result: bool,
-    /// Left events only: the result lies above the edge (left of it when vertical).
-    pub result_above: bool,
-    /// Left events only: the closest non-vertical result edge below this one when it was inserted, used to nest
-    /// holes (§5).
-    pub result_below: EventId,
-    /// Left events only: the edge's node in the sweep-line status, `NONE` when not in it.
+    /// Left events only: the edge's node in the sweep-line status, `NONE` when not in it. The node holds what the
+    /// sweep knows of the edge while it is in S, its flags of Fig. 9 among them (see [`crate::sweep::InStatus`]).
     pub node: u32,
     /// Left events only: index of the edge among the result edges, once recorded.
     pub result_edge: u32,
-    /// Index of the output vertex at this event's point, assigned when the event is processed.
-    pub vertex: u32,
 }
 
+/// The bit of [`SweepEvent::segment_and_side`] that marks a left endpoint (input segments are fewer than 2^31).
+const LEFT: u32 = 1 << 31;
+
 impl SweepEvent {
+    /// Index of the input segment this edge lies on, among the sweep's input edges, which give its line (oriented
+    /// in sweep order) and its operand; also a stable tie-break shared by all fragments of one input edge.
+    pub fn segment(&self) -> u32 {
+        self.segment_and_side & !LEFT
+    }
+
+    /// Is this the left endpoint of its edge (first in sweep order)?
+    pub fn left(&self) -> bool {
+        self.segment_and_side & LEFT != 0
+    }
+
     /// An event of input edge `segment`, `edge`.
     pub fn new(point: SweepPoint, left: bool, segment: u32, edge: &InputEdge) -> Self {
         let mut winding = [0; 2];
         winding[edge.operand as usize] = edge.winding;
-        Self::unprocessed(point, left, edge.line.is_vertical(), segment, winding)
+        Self::unprocessed(point, left, segment, winding)
     }
 
     /// A copy of this edge's identity (segment, winding) for a new event of one of its fragments.
@@ -76,33 +77,21 @@ impl SweepEvent {
         SweepEvent {
             other,
             other_point,
-            ..Self::unprocessed(point, left, self.vertical, self.segment, self.winding)
+            ..Self::unprocessed(point, left, self.segment(), self.winding)
         }
     }
 
-    /// An event that the sweep has not reached yet: no flags, no node, no vertex.
-    fn unprocessed(
-        point: SweepPoint,
-        left: bool,
-        vertical: bool,
-        segment: u32,
-        winding: [i32; 2],
-    ) -> Self {
+    /// An event that the sweep has not reached yet: not in S, not in the result.
+    fn unprocessed(point: SweepPoint, left: bool, segment: u32, winding: [i32; 2]) -> Self {
+        debug_assert!(segment < LEFT, "more input segments than an event can name");
         SweepEvent {
             point,
             other: NONE,
             other_point: point,
-            left,
-            vertical,
-            segment,
+            segment_and_side: if left { segment | LEFT } else { segment },
             winding,
-            coverage_above: [0; 2],
-            in_result: false,
-            result_above: false,
-            result_below: NONE,
             node: NONE,
             result_edge: NONE,
-            vertex: NONE,
         }
     }
 }
@@ -149,13 +138,13 @@ pub(crate) fn event_order(
 ) -> Ordering {
     let at_point = |e: EventId| {
         let event = &events[e as usize];
-        let edge = &edges[event.segment as usize];
+        let edge = &edges[event.segment() as usize];
         AtPoint {
-            left: event.left,
+            left: event.left(),
             line: edge.line,
             far: event.other_point,
             operand: edge.operand,
-            segment: event.segment,
+            segment: event.segment(),
         }
     };
     let (ea, eb) = (&events[a as usize], &events[b as usize]);
@@ -412,8 +401,29 @@ mod tests {
         for (i, event) in events.iter().enumerate() {
             let other = &events[event.other as usize];
             assert_eq!(other.other as usize, i);
-            assert_ne!(other.left, event.left);
+            assert_ne!(other.left(), event.left());
             assert_eq!(other.point.approx, event.other_point.approx);
+        }
+    }
+
+    #[test]
+    fn an_event_takes_72_bytes() {
+        // The events are the sweep's largest array (two or more per input edge): their size is its memory traffic.
+        assert_eq!(std::mem::size_of::<SweepEvent>(), 72);
+        let edge = InputEdge {
+            line: Line {
+                a: [0.0, 0.0],
+                b: [1.0, 0.0],
+            },
+            operand: 1,
+            winding: -1,
+        };
+        let point = SweepPoint::input([0.0, 0.0]);
+        for (segment, left) in [(0, true), (7, false), (LEFT - 1, true), (LEFT - 1, false)] {
+            let event = SweepEvent::new(point, left, segment, &edge);
+            assert_eq!((event.segment(), event.left()), (segment, left));
+            let fragment = event.fragment(point, !left, 3, point);
+            assert_eq!((fragment.segment(), fragment.left()), (segment, !left));
         }
     }
 

@@ -17,7 +17,7 @@
 //! edge is the coverage below it; what the vertical edge separates is its right side (that coverage) from its
 //! left side (that coverage plus its winding).
 
-use crate::events::{EventId, SweepEvent, NONE};
+use crate::events::{EventId, NONE};
 
 /// A Boolean operation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -98,24 +98,45 @@ impl Selection {
         }
     }
 
-    /// Fig. 9 generalised: sets the coverage and result flags of the left event `edge`, given the edge `below` it
-    /// in S (or `NONE`).
-    pub fn set_flags(&self, events: &mut [SweepEvent], edge: EventId, below: EventId) {
-        let (coverage_below, result_below) = match events.get(below as usize) {
+    /// Fig. 9 generalised: the flags of an edge with `winding`, vertical or not, given the edge below it in S (its
+    /// left event, flags and whether it is vertical), if any.
+    pub fn flags(
+        &self,
+        winding: [i32; 2],
+        vertical: bool,
+        below: Option<(EventId, &Flags, bool)>,
+    ) -> Flags {
+        let (coverage_below, result_below) = match below {
             None => ([0; 2], NONE),
-            Some(b) if b.in_result && !b.vertical => (b.coverage_above, below),
-            Some(b) => (b.coverage_above, b.result_below),
+            Some((b, flags, false)) if flags.in_result => (flags.coverage_above, b),
+            Some((_, flags, _)) => (flags.coverage_above, flags.result_below),
         };
-        let e = &mut events[edge as usize];
         let crossed = [
-            coverage_below[0] + e.winding[0],
-            coverage_below[1] + e.winding[1],
+            coverage_below[0] + winding[0],
+            coverage_below[1] + winding[1],
         ];
-        e.coverage_above = if e.vertical { coverage_below } else { crossed };
-        e.result_above = self.in_result(crossed);
-        e.in_result = self.in_result(coverage_below) != e.result_above;
-        e.result_below = result_below;
+        let result_above = self.in_result(crossed);
+        Flags {
+            coverage_above: if vertical { coverage_below } else { crossed },
+            result_above,
+            in_result: self.in_result(coverage_below) != result_above,
+            result_below,
+        }
     }
+}
+
+/// What the selection knows of an edge in S (Fig. 9, generalised).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Flags {
+    /// Winding numbers of the region just above the edge (§4, Fig. 9).
+    pub coverage_above: [i32; 2],
+    /// The edge is part of the result's boundary (§4, Fig. 10).
+    pub in_result: bool,
+    /// The result lies above the edge (left of it when vertical).
+    pub result_above: bool,
+    /// The closest non-vertical result edge below this one when it was inserted, as a left event, used to nest
+    /// holes (§5).
+    pub result_below: EventId,
 }
 
 #[cfg(test)]
@@ -165,38 +186,24 @@ mod tests {
             operation: Intersection,
             fill_rule: FillRule::EvenOdd,
         };
-        let edge = |operand| crate::events::InputEdge {
-            line: crate::exact::Line {
-                a: [0.0, 0.0],
-                b: [1.0, 0.0],
-            },
-            operand,
-            winding: 1,
-        };
-        let mut events = vec![
-            SweepEvent::new(
-                crate::exact::SweepPoint::input([0.0, 0.0]),
-                true,
-                0,
-                &edge(0),
-            ),
-            SweepEvent::new(
-                crate::exact::SweepPoint::input([0.0, 1.0]),
-                true,
-                1,
-                &edge(1),
-            ),
-        ];
-        s.set_flags(&mut events, 0, NONE);
-        s.set_flags(&mut events, 1, 0);
+        let subject = s.flags([1, 0], false, None);
+        let clipping = s.flags([0, 1], false, Some((0, &subject, false)));
         // Paper: ple null => inside = inOut = false; so the subject edge is not inside the clipping polygon.
-        assert!(!events[0].in_result);
+        assert!(!subject.in_result);
         // Second edge: inside the subject (its `inside` flag is !ple.inOut = true), so it bounds the intersection.
-        assert!(events[1].in_result && events[1].result_above);
+        assert!(clipping.in_result && clipping.result_above);
         assert_eq!(
-            events[1].result_below, NONE,
+            clipping.result_below, NONE,
             "the edge below is not in the result"
         );
+        // A third edge above, of the subject again: it closes the subject's region, and the clipping edge below it
+        // is the result edge below it.
+        let third = s.flags([-1, 0], false, Some((1, &clipping, false)));
+        assert!(third.in_result && !third.result_above);
+        assert_eq!(third.result_below, 1);
+        // A vertical edge leaves the coverage above as it was below.
+        let vertical = s.flags([1, 0], true, Some((1, &clipping, false)));
+        assert_eq!(vertical.coverage_above, clipping.coverage_above);
     }
 
     #[test]

@@ -109,6 +109,11 @@ impl<K: Copy> Status<K> {
         &self.nodes[node as usize].key
     }
 
+    /// The same, to change what the order does not read.
+    pub fn key_mut(&mut self, node: u32) -> &mut K {
+        &mut self.nodes[node as usize].key
+    }
+
     /// Puts another edge at `node`; the caller guarantees that it belongs at this position of the order.
     pub fn replace(&mut self, node: u32, event: EventId, key: K) {
         let n = &mut self.nodes[node as usize];

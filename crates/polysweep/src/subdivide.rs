@@ -129,7 +129,6 @@ impl Sweep<'_> {
         }
         self.status.remove(self.event(merged).node);
         self.events[merged as usize].node = crate::events::NONE;
-        let below = self.below(self.event(keep).node);
-        self.selection.set_flags(&mut self.events, keep, below);
+        self.set_flags(self.event(keep).node);
     }
 }

@@ -27,7 +27,7 @@ use crate::events::{
     event_order, initial_events, EventId, EventQueue, InputEdge, Operand, SweepEvent, NONE,
 };
 use crate::exact::{Exact, Line, SweepPoint};
-use crate::select::Selection;
+use crate::select::{Flags, Selection};
 use std::cmp::Ordering;
 
 /// An edge of the result, oriented with the result on its left.
@@ -42,13 +42,18 @@ pub(crate) struct ResultEdge {
     pub below: u32,
 }
 
-/// What the status order reads of an edge in S (see [`Sweep::is_below`]); it never changes while the edge is there.
+/// What S keeps of an edge while the edge is in it: what the status order reads (see [`Sweep::is_below`]), which
+/// never changes while the edge is there; and what the sweep reads when the edge above it is inserted or when it
+/// ends, its flags of Fig. 9 and the output vertex at its left end. Kept in the node, not in the event, because
+/// S is small and read all the time, and the events are many.
 #[derive(Clone, Copy)]
-pub(crate) struct StatusKey {
+pub(crate) struct InStatus {
     line: Line,
     operand: Operand,
     segment: u32,
     event: EventId,
+    flags: Flags,
+    vertex: u32,
 }
 
 pub(crate) struct Sweep<'a> {
@@ -57,7 +62,7 @@ pub(crate) struct Sweep<'a> {
     pub events: Vec<SweepEvent>,
     pub exact: Exact,
     pub queue: EventQueue,
-    pub status: crate::status::Status<StatusKey>,
+    pub status: crate::status::Status<InStatus>,
     pub selection: Selection,
     /// The point being processed.
     pub current: SweepPoint,
@@ -122,7 +127,7 @@ impl<'a> Sweep<'a> {
 
     /// The input edge that event `e`'s edge lies on.
     pub fn input_edge(&self, e: EventId) -> &'a InputEdge {
-        &self.edges[self.event(e).segment as usize]
+        &self.edges[self.event(e).segment() as usize]
     }
 
     pub fn push(&mut self, e: EventId) {
@@ -163,7 +168,7 @@ impl<'a> Sweep<'a> {
             self.current = point;
 
             self.assign_vertex(e);
-            if self.event(e).left {
+            if self.event(e).left() {
                 self.process_left(e);
             } else {
                 self.process_right(e);
@@ -181,11 +186,15 @@ impl<'a> Sweep<'a> {
         if !same {
             self.vertices.push(point);
         }
-        self.events[e as usize].vertex = (self.vertices.len() - 1) as u32;
+    }
+
+    /// The output vertex of the event being processed.
+    fn current_vertex(&self) -> u32 {
+        (self.vertices.len() - 1) as u32
     }
 
     /// The status order: is the new edge `e` below the edge `old` of S?
-    fn is_below(&self, e: EventId, old: &StatusKey) -> bool {
+    fn is_below(&self, e: EventId, old: &InStatus) -> bool {
         let new = self.event(e);
         let side = match self.exact.orient(&old.line, &new.point) {
             Ordering::Equal => self.exact.orient(&old.line, &self.other_point(e)),
@@ -196,7 +205,7 @@ impl<'a> Sweep<'a> {
             Ordering::Greater => false,
             Ordering::Equal => {
                 let operand = self.input_edge(e).operand;
-                (operand, new.segment, e) < (old.operand, old.segment, old.event)
+                (operand, new.segment(), e) < (old.operand, old.segment, old.event)
             }
         }
     }
@@ -248,21 +257,44 @@ impl<'a> Sweep<'a> {
                 .any(|q| self.exact.cmp_points(q, p) == Ordering::Equal)
     }
 
-    /// What the status order reads of the edge of left event `e`.
-    fn status_key(&self, e: EventId) -> StatusKey {
+    /// What S keeps of the edge of left event `e`, being inserted at this event's point; its flags are set once it
+    /// is in S (see [`Self::set_flags`]).
+    fn in_status(&self, e: EventId) -> InStatus {
         let input = self.input_edge(e);
-        StatusKey {
+        InStatus {
             line: input.line,
             operand: input.operand,
-            segment: self.event(e).segment,
+            segment: self.event(e).segment(),
             event: e,
+            flags: Flags {
+                coverage_above: [0; 2],
+                in_result: false,
+                result_above: false,
+                result_below: NONE,
+            },
+            vertex: self.current_vertex(),
         }
+    }
+
+    /// Fig. 9: the flags of the edge at `node` in S, from the edge below it.
+    pub fn set_flags(&mut self, node: u32) {
+        let below = match self.status.prev(node) {
+            NONE => None,
+            b => Some(self.status.key(b)),
+        };
+        let edge = self.status.key(node);
+        let flags = self.selection.flags(
+            self.event(edge.event).winding,
+            edge.line.is_vertical(),
+            below.map(|b| (b.event, &b.flags, b.line.is_vertical())),
+        );
+        self.status.key_mut(node).flags = flags;
     }
 
     fn process_left(&mut self, e: EventId) {
         // The order reads the events, not S, so S is taken out while it inserts.
         let mut status = std::mem::take(&mut self.status);
-        let node = status.insert(e, self.status_key(e), |old| self.is_below(e, old));
+        let node = status.insert(e, self.in_status(e), |old| self.is_below(e, old));
         self.status = status;
         self.settle(e, node, false);
     }
@@ -289,7 +321,7 @@ impl<'a> Sweep<'a> {
             }
             self.note_close_calls(&p, [below, above]);
         }
-        self.selection.set_flags(&mut self.events, e, below);
+        self.set_flags(node);
 
         if below != NONE {
             self.possible_inter(below, e);
@@ -308,23 +340,23 @@ impl<'a> Sweep<'a> {
         }
         let (below, above) = (self.below(node), self.above(node));
         self.note_close_calls(&self.current.clone(), [below, above]);
-        let edge = self.event(l);
-        if edge.in_result {
-            let (from, to) = (edge.vertex, self.event(r).vertex);
-            let forward = edge.result_above;
+        let edge = *self.status.key(node);
+        if edge.flags.in_result {
+            let (from, to) = (edge.vertex, self.current_vertex());
+            let forward = edge.flags.result_above;
             let result_edge = ResultEdge {
                 from: if forward { from } else { to },
                 to: if forward { to } else { from },
-                line: self.input_edge(l).line,
+                line: edge.line,
                 forward,
-                below: edge.result_below,
+                below: edge.flags.result_below,
             };
             self.events[l as usize].result_edge = self.result.len() as u32;
             self.result.push(result_edge);
         }
         self.events[l as usize].node = NONE;
         if let Some(next) = self.successor_in_place(node) {
-            self.status.replace(node, next, self.status_key(next));
+            self.status.replace(node, next, self.in_status(next));
             self.settle(next, node, true);
             // Should `next` have left S again (merged into a neighbour, or put back in Q), the neighbours it
             // separated are neighbours now, as on the ordinary path.
@@ -348,7 +380,7 @@ impl<'a> Sweep<'a> {
             .queue
             .peek(|a, b| event_order(&self.events, self.edges, &self.exact, a, b))?;
         let event = self.event(next);
-        if !event.left || self.exact.cmp_points(&event.point, &self.current) != Ordering::Equal {
+        if !event.left() || self.exact.cmp_points(&event.point, &self.current) != Ordering::Equal {
             return None;
         }
         // A neighbour whose line misses the point is on the side the orientation says (`is_below` at the new
