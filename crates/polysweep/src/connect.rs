@@ -284,18 +284,23 @@ pub(crate) fn connect(
             ring_of_edge[e] = r as u32;
         }
     }
-    // Each ring's edges into and out of its lowest-leftmost vertex, and its orientation there.
-    let lexicographic = |a: &Point, b: &Point| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y));
-    let leftmost: Vec<(usize, usize)> = rings
+    // Each ring as it is written out: its rounded vertices, closed (the first repeated last). Made once, and read
+    // below instead of the edges, which lie scattered in memory.
+    let mut written: Vec<Ring> = rings
         .iter()
         .map(|ring| {
+            let mut out: Ring = Vec::with_capacity(ring.len() + 1);
+            out.extend(ring.iter().map(|&e| points[edges[e].from as usize]));
+            out.push(out[0]);
+            out
+        })
+        .collect();
+    // Each ring's edges into and out of its lowest-leftmost vertex, and its orientation there.
+    let lexicographic = |a: &Point, b: &Point| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y));
+    let leftmost: Vec<(usize, usize)> = (rings.iter().zip(&written))
+        .map(|(ring, points)| {
             let k = (0..ring.len())
-                .min_by(|&i, &j| {
-                    lexicographic(
-                        &points[edges[ring[i]].from as usize],
-                        &points[edges[ring[j]].from as usize],
-                    )
-                })
+                .min_by(|&i, &j| lexicographic(&points[i], &points[j]))
                 .expect("rings are not empty");
             (ring[(k + ring.len() - 1) % ring.len()], ring[k])
         })
@@ -303,19 +308,14 @@ pub(crate) fn connect(
     // Orientation of the rounded ring (its signed area), checked exactly at the ring's first vertex in sweep order
     // (vertex ids follow the sweep). A ring whose rounded copy has no area, or the opposite orientation, is a
     // sliver thinner than rounding: it is dropped (`Equal`).
-    let turn: Vec<Ordering> = rings
-        .iter()
-        .map(|ring| {
+    let turn: Vec<Ordering> = (rings.iter().zip(&written))
+        .map(|(ring, rounded)| {
             let k = (0..ring.len())
                 .min_by_key(|&k| edges[ring[k]].from)
                 .expect("rings are not empty");
             let (incoming, outgoing) = (ring[(k + ring.len() - 1) % ring.len()], ring[k]);
             let exact_turn = cross(exact, &edges[incoming], &edges[outgoing]);
-            let rounded: Vec<Point> = ring
-                .iter()
-                .map(|&e| points[edges[e].from as usize])
-                .collect();
-            let rounded_turn = crate::ring_area(&rounded)
+            let rounded_turn = crate::ring_area(rounded)
                 .partial_cmp(&0.0)
                 .unwrap_or(Ordering::Equal);
             // Where rounding merged vertices, the two edges need not meet at one exact point (an edge that shrank
@@ -342,19 +342,13 @@ pub(crate) fn connect(
             .map(|b| ring_of_edge[b as usize])
             .find(|&b| b != NONE && b != r)
     };
-    let to_ring = |ring: &[usize]| -> Ring {
-        let mut out: Ring = Vec::with_capacity(ring.len() + 1);
-        out.extend(ring.iter().map(|&e| points[edges[e].from as usize]));
-        out.push(out[0]);
-        out
-    };
     let mut polygon_of_ring = vec![NONE; rings.len()];
     let mut polygons: Vec<Polygon> = Vec::new();
     for (r, ring) in rings.iter().enumerate() {
         if is_shell(r as u32) && ring.len() >= 3 {
             polygon_of_ring[r] = polygons.len() as u32;
             polygons.push(Polygon {
-                exterior: to_ring(ring),
+                exterior: std::mem::take(&mut written[r]),
                 holes: Vec::new(),
             });
         }
@@ -371,7 +365,7 @@ pub(crate) fn connect(
                 _ => break,
             }
         }
-        let hole = to_ring(ring);
+        let hole = std::mem::take(&mut written[r]);
         let polygon = match owner.filter(|&o| is_shell(o) && polygon_of_ring[o as usize] != NONE) {
             Some(shell) => Some(polygon_of_ring[shell as usize] as usize),
             // The edge below was one that rounding shrank to a point: find the shell by position instead.
