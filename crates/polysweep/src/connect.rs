@@ -16,7 +16,7 @@
 //! way to go at a vertex shared by more than two result edges, and does not say how holes find their polygons.
 //! The walk above decides both from the orientation of the edges.
 
-use crate::events::NONE;
+use crate::events::{InputEdge, NONE};
 use crate::exact::{Exact, SweepPoint};
 use crate::geometry::{MultiPolygon, Point, Polygon, Ring};
 use crate::sweep::ResultEdge;
@@ -24,19 +24,29 @@ use crate::validate::Side;
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
-/// Sign of the cross product of the travel directions of two result edges.
-fn cross(exact: &Exact, e: &ResultEdge, f: &ResultEdge) -> Ordering {
-    let sign = exact.cross_directions(&e.line, &f.line);
-    if e.forward == f.forward {
-        sign
-    } else {
-        sign.reverse()
+/// The exact predicates, and the input edges whose lines the result edges lie on.
+#[derive(Clone, Copy)]
+struct Lines<'a> {
+    exact: &'a Exact,
+    input: &'a [InputEdge],
+}
+
+impl Lines<'_> {
+    /// Sign of the cross product of the travel directions of two result edges.
+    fn cross(&self, e: &ResultEdge, f: &ResultEdge) -> Ordering {
+        let line = |e: &ResultEdge| &self.input[e.segment as usize].line;
+        let sign = self.exact.cross_directions(line(e), line(f));
+        if e.forward == f.forward {
+            sign
+        } else {
+            sign.reverse()
+        }
     }
 }
 
 /// Of the edges leaving a vertex, the first clockwise from the reverse of `incoming`.
 fn next_edge(
-    exact: &Exact,
+    lines: Lines,
     edges: &[ResultEdge],
     incoming: usize,
     candidates: impl Iterator<Item = usize>,
@@ -47,7 +57,7 @@ fn next_edge(
         e
     };
     // Clockwise angle from `back`: right half-plane first, then straight on, then the left half-plane.
-    let half = |e: &ResultEdge| match cross(exact, &back, e) {
+    let half = |e: &ResultEdge| match lines.cross(&back, e) {
         Ordering::Less => 0,
         Ordering::Equal => 1,
         Ordering::Greater => 2,
@@ -55,12 +65,12 @@ fn next_edge(
     candidates.min_by(|&a, &b| {
         let (ea, eb) = (&edges[a], &edges[b]);
         // Within a half, `a` first when `b` is clockwise from it.
-        half(ea).cmp(&half(eb)).then_with(|| cross(exact, ea, eb))
+        half(ea).cmp(&half(eb)).then_with(|| lines.cross(ea, eb))
     })
 }
 
 /// Walks the result edges into simple rings, each as its list of edge indices.
-fn walk_rings(exact: &Exact, vertex_count: usize, edges: &[ResultEdge]) -> Vec<Vec<usize>> {
+fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge]) -> Vec<Vec<usize>> {
     // Edges leaving each vertex, bucketed (counting sort by `from`).
     let mut first_out = vec![0usize; vertex_count + 1];
     for e in edges {
@@ -113,7 +123,7 @@ fn walk_rings(exact: &Exact, vertex_count: usize, edges: &[ResultEdge]) -> Vec<V
             }
             let range = first_out[v as usize]..first_out[v as usize + 1];
             let candidates = outgoing[range].iter().copied().filter(|&i| !used[i]);
-            match next_edge(exact, edges, current, candidates) {
+            match next_edge(lines, edges, current, candidates) {
                 Some(next) => current = next,
                 // Cannot happen: every vertex has as many result edges in as out. Drop the open path.
                 None => break,
@@ -266,6 +276,7 @@ fn innermost_shell_around(polygons: &[Polygon], hole: &[Point]) -> Option<usize>
 /// are rings whose rounded area is zero.
 pub(crate) fn connect(
     exact: &Exact,
+    input: &[InputEdge],
     vertices: &[SweepPoint],
     edges: &mut [ResultEdge],
     below_edge: impl Fn(u32) -> u32,
@@ -277,7 +288,8 @@ pub(crate) fn connect(
         e.from = vertex_ids[e.from as usize];
         e.to = vertex_ids[e.to as usize];
     }
-    let rings = walk_rings(exact, points.len(), edges);
+    let lines = Lines { exact, input };
+    let rings = walk_rings(lines, points.len(), edges);
     let mut ring_of_edge = vec![NONE; edges.len()];
     for (r, ring) in rings.iter().enumerate() {
         for &e in ring {
@@ -314,7 +326,7 @@ pub(crate) fn connect(
                 .min_by_key(|&k| edges[ring[k]].from)
                 .expect("rings are not empty");
             let (incoming, outgoing) = (ring[(k + ring.len() - 1) % ring.len()], ring[k]);
-            let exact_turn = cross(exact, &edges[incoming], &edges[outgoing]);
+            let exact_turn = lines.cross(&edges[incoming], &edges[outgoing]);
             let rounded_turn = crate::ring_area(rounded)
                 .partial_cmp(&0.0)
                 .unwrap_or(Ordering::Equal);

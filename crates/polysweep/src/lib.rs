@@ -210,9 +210,13 @@ fn sweep_once(
     };
     let suspect = sweep.close_call || connect::rounding_may_matter(&sweep.vertices);
     let events = &sweep.events;
-    let result = connect::connect(&sweep.exact, &sweep.vertices, &mut sweep.result, |e| {
-        events[e as usize].result_edge
-    });
+    let result = connect::connect(
+        &sweep.exact,
+        edges,
+        &sweep.vertices,
+        &mut sweep.result,
+        |e| events[e as usize].result_edge,
+    );
     (result, stats, suspect)
 }
 

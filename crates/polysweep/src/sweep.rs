@@ -35,8 +35,9 @@ use std::cmp::Ordering;
 pub(crate) struct ResultEdge {
     pub from: u32,
     pub to: u32,
-    pub line: Line,
-    /// Travelled along `line` (left to right), or against it.
+    /// The input segment it lies on, whose line (left to right) gives its direction.
+    pub segment: u32,
+    /// Travelled along the line (left to right), or against it.
     pub forward: bool,
     /// The closest non-vertical result edge below this one, as a left event (later: a result edge index).
     pub below: u32,
@@ -347,7 +348,7 @@ impl<'a> Sweep<'a> {
             let result_edge = ResultEdge {
                 from: if forward { from } else { to },
                 to: if forward { to } else { from },
-                line: edge.line,
+                segment: edge.segment,
                 forward,
                 below: edge.flags.result_below,
             };
