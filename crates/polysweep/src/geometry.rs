@@ -138,6 +138,26 @@ pub(crate) fn orient(a: Point, b: Point, c: Point) -> std::cmp::Ordering {
         .unwrap_or(std::cmp::Ordering::Equal)
 }
 
+/// The smaller of two floats that are not NaN, by one comparison. `f64::min` also sorts out NaN, which in wasm,
+/// where that is not one instruction, costs a call to libm's `fmin` (with `fmax`, 8% of the time of land ∩ 8
+/// squares in the npm package, before these).
+pub(crate) fn smaller(a: f64, b: f64) -> f64 {
+    if b < a {
+        b
+    } else {
+        a
+    }
+}
+
+/// The larger of two floats that are not NaN (see [`smaller`]).
+pub(crate) fn larger(a: f64, b: f64) -> f64 {
+    if b > a {
+        b
+    } else {
+        a
+    }
+}
+
 /// Signed area of a ring by the shoelace formula: positive when counter-clockwise.
 pub fn ring_area(ring: &[Point]) -> f64 {
     let n = open_len(ring);

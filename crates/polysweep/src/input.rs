@@ -3,7 +3,7 @@
 use crate::error::{Error, Location};
 use crate::events::{InputEdge, Operand};
 use crate::exact::Line;
-use crate::geometry::{open_len, MultiPolygon, Point};
+use crate::geometry::{larger, open_len, smaller, MultiPolygon, Point};
 
 /// Largest coordinate magnitude accepted: 2^200. Within it (and above [`MIN_COORDINATE`]) the products formed by
 /// the exact predicates neither overflow nor underflow, which their proofs assume.
@@ -62,16 +62,16 @@ impl Bounds {
 
     fn with(self, p: &Point) -> Bounds {
         Bounds {
-            min: [self.min[0].min(p.x), self.min[1].min(p.y)],
-            max: [self.max[0].max(p.x), self.max[1].max(p.y)],
+            min: [smaller(self.min[0], p.x), smaller(self.min[1], p.y)],
+            max: [larger(self.max[0], p.x), larger(self.max[1], p.y)],
         }
     }
 
     /// The box around `boxes`.
     pub fn around(boxes: &[Bounds]) -> Bounds {
         boxes.iter().fold(Bounds::EMPTY, |b, c| Bounds {
-            min: [b.min[0].min(c.min[0]), b.min[1].min(c.min[1])],
-            max: [b.max[0].max(c.max[0]), b.max[1].max(c.max[1])],
+            min: [smaller(b.min[0], c.min[0]), smaller(b.min[1], c.min[1])],
+            max: [larger(b.max[0], c.max[0]), larger(b.max[1], c.max[1])],
         })
     }
 

@@ -18,6 +18,7 @@
 
 use crate::events::EventId;
 use crate::exact::SweepPoint;
+use crate::geometry::{larger, smaller};
 use crate::sweep::Sweep;
 use std::cmp::Ordering::Equal;
 
@@ -31,7 +32,7 @@ impl Sweep<'_> {
         // strictly apart.
         let y_range = |a: &SweepPoint, b: &SweepPoint| {
             let (u, v) = (a.approx[1], b.approx[1]);
-            (u.min(v), u.max(v))
+            (smaller(u, v), larger(u, v))
         };
         let ((low1, high1), (low2, high2)) = (y_range(&a1, &b1), y_range(&a2, &b2));
         if high1 < low2 || high2 < low1 {

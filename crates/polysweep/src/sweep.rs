@@ -27,6 +27,7 @@ use crate::events::{
     event_order, initial_events, EventId, EventQueue, InputEdge, Operand, SweepEvent, NONE,
 };
 use crate::exact::{Exact, Line, SweepPoint};
+use crate::geometry::larger;
 use crate::select::{Flags, Selection};
 use std::cmp::Ordering;
 
@@ -109,7 +110,7 @@ impl<'a> Sweep<'a> {
                 (edges.iter())
                     .flat_map(|edge| [edge.line.a, edge.line.b])
                     .flatten()
-                    .fold(0.0f64, |m, v| m.max(v.abs())),
+                    .fold(0.0f64, |m, v| larger(m, v.abs())),
             ),
         }
     }
@@ -250,7 +251,7 @@ impl<'a> Sweep<'a> {
         let magnitude = [a.approx, b.approx, p.approx]
             .iter()
             .flatten()
-            .fold(0.0f64, |m, v| m.max(v.abs()));
+            .fold(0.0f64, |m, v| larger(m, v.abs()));
         // A vertex of the edge moves with it.
         within(crate::connect::clearance(magnitude))
             && ![a, b]
