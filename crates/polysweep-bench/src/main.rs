@@ -31,7 +31,7 @@ const REFERENCE: [(usize, f64); 4] = [
 ];
 /// Timed runs per engine and workload; `BENCH_RUNS` overrides it (more runs steady the minimum for A/B comparisons
 /// on a noisy machine).
-const RUNS: usize = 7;
+const RUNS: usize = 11;
 
 /// Clipper2 works on integers: coordinates scaled by 10^8, its finest documented precision.
 #[derive(Debug, Default, Clone, Copy, PartialEq, Hash)]
