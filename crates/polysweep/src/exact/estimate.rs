@@ -7,8 +7,10 @@
 //! proven by the usual analysis (each float operation is off by at most 2^-53 of its result) and then taken with a
 //! wide margin. The exact coordinate therefore lies within a known distance of the estimate, and when no rounding
 //! boundary (the midpoint between two floats) lies within that distance, the nearest float to the estimate is the
-//! nearest float to the exact coordinate. Otherwise — nearly parallel lines, or a coordinate within about 2^-90 of
-//! its size from a midpoint or exactly on a float — the caller rounds the exact value instead.
+//! nearest float to the exact coordinate. Otherwise the caller rounds the exact value instead: for nearly parallel
+//! lines, a coordinate within about 2^-90 of its size from a midpoint, and an estimate that is exactly a float (the
+//! exact value may then be that float, which only the exact path can tell; knowing it lets later comparisons of
+//! the coordinate skip exact arithmetic, as on grids of integers).
 //!
 //! Each coordinate is taken along whichever line bounds its error more tightly, and straight from an
 //! axis-parallel line, where it is exact.
@@ -37,7 +39,7 @@ pub(super) fn rounded_crossing(l: &Line, m: &Line) -> Option<([f64; 2], [bool; 2
     let mut exact = [false; 2];
     for axis in 0..2 {
         if let Some(line) = [l, m].into_iter().find(|line| line.a[axis] == line.b[axis]) {
-            (approx[axis], exact[axis]) = (line.a[axis], true);
+            (approx[axis], exact[axis]) = (line.a[axis] + 0.0, true); // -0 as 0, as the exact path gives
             continue;
         }
         // λ's error shows in the coordinate multiplied by the line's extent along the axis.
@@ -119,8 +121,8 @@ fn rounded(a: f64, b: f64, (lambda, error): (Double, f64)) -> Option<f64> {
     let low = ((s_low + p_low) + cross[0]) + cross[1];
     // The estimate is s + low; r is its nearest float, and e = s + low − r exactly.
     let (r, e) = two_sum(s, low);
-    // λ's error carried by |b − a|; the two cross products' rounding and the one left out; the three additions
-    // into `low`.
+    // λ's error carried by |b − a|; the product left out (at most ε²|p|, doubled); the rounding of the two cross
+    // products and of the three additions into `low` (3ε of the terms at most, taken as 4ε).
     let error = (d.abs() + d_low.abs()) * error
         + 2.0 * EPSILON * EPSILON * p.abs()
         + 4.0 * EPSILON * (s_low.abs() + p_low.abs() + cross[0].abs() + cross[1].abs())
@@ -133,7 +135,8 @@ fn rounded(a: f64, b: f64, (lambda, error): (Double, f64)) -> Option<f64> {
     let bits = magnitude.to_bits();
     let half_gap =
         (f64::from_bits(bits + 1) - magnitude).min(magnitude - f64::from_bits(bits - 1)) / 2.0;
-    (e.abs() + error * BOUND_MARGIN < half_gap).then_some(r)
+    // An estimate that is exactly a float is left to the exact path, which tells whether the coordinate is that float.
+    (e != 0.0 && e.abs() + error * BOUND_MARGIN < half_gap).then_some(r)
 }
 
 /// `s + e = a + b` exactly (Knuth).
@@ -174,7 +177,7 @@ mod tests {
     }
 
     #[test]
-    fn a_coordinate_on_a_midpoint_is_left_to_the_exact_path() {
+    fn a_coordinate_on_a_midpoint_or_on_a_float_is_left_to_the_exact_path() {
         // 1 + 2^-53 is halfway between 1 and the next float: no estimate may round it.
         assert_eq!(rounded(1.0, 1.0 + f64::EPSILON, ((0.5, 0.0), 0.0)), None);
         // An eighth of the way is clear of every midpoint: it rounds to 1.
@@ -182,5 +185,7 @@ mod tests {
             rounded(1.0, 1.0 + f64::EPSILON, ((0.125, 0.0), 0.0)),
             Some(1.0)
         );
+        // Exactly a float: only the exact path can say the coordinate is exact, so it is left to it.
+        assert_eq!(rounded(1.0, 3.0, ((0.5, 0.0), 0.0)), None);
     }
 }
