@@ -149,9 +149,6 @@ pub(crate) fn clearance(magnitude: f64) -> f64 {
 /// vertex of the result. An edge that passes that close to a crossing point crosses its edges there too, or ends
 /// there, so it has a vertex in the cluster as well; far from any cluster, rounding moves nothing across anything.
 pub(crate) fn rounding_may_matter(vertices: &[SweepPoint]) -> bool {
-    if vertices.iter().all(SweepPoint::is_input) {
-        return false;
-    }
     // Sweep order is x order and rounding is monotone, so the vertices within a few ulps of a point in x are a
     // range of the sweep order, found by halving. A short range is scanned. In a long one (a grid's column of
     // thousands of vertices at one x), vertices of one x come in y order (the sweep's), in runs found once over

@@ -3,8 +3,9 @@
 //! A point of the sweep is either an input vertex (two f64, exact) or the crossing of the supporting lines of two
 //! input segments, defined exactly by those two lines, with its correctly rounded f64 coordinates (proven by float
 //! arithmetic where possible, see [`estimate`]) and, made on first need, its exact coordinates `(x, y) / d` in
-//! dyadic big integers. Every predicate the sweep asks — the order of two points (§4's event order) and the side of a point with respect to an input segment's line (the status order of §3,
-//! §7.1 and the intersection tests of Fig. 6) — is answered exactly: first by a floating-point filter with a proven
+//! dyadic big integers. Every predicate the sweep asks — the order of two points (§4's event order) and the side of
+//! a point with respect to an input segment's line (the status order of §3, §7.1 and the intersection tests of
+//! Fig. 6) — is answered exactly: first by a floating-point filter with a proven
 //! error bound, and only when the filter cannot decide, by big-integer arithmetic. Computed points are never rounded
 //! for a decision; they are rounded to f64 only when the result rings are written out.
 //!
@@ -262,7 +263,11 @@ fn rounding_error(v: f64) -> f64 {
 /// magnitudes of the two products. It is a proven bound on the rounding error of the float determinant, not a
 /// tolerance: a determinant beyond it has the sign of the exact one, and anything within it goes to the adaptive
 /// exact predicate, so it cannot change a decision, only how fast it is made.
-const ORIENT_FILTER: f64 = (3.0 + 16.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2.0;
+const ORIENT_FILTER: f64 = (3.0 + 16.0 * UNIT_ROUNDOFF) * UNIT_ROUNDOFF;
+
+/// ε = 2^-53: a float operation's result is off by at most this much of itself (round to nearest). The unit of
+/// every proven error bound here, not a tolerance.
+const UNIT_ROUNDOFF: f64 = f64::EPSILON / 2.0;
 
 /// The sign of `value`, if it is farther from zero than `bound`.
 fn filtered_sign(value: f64, bound: f64) -> Option<Ordering> {

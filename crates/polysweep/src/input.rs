@@ -34,7 +34,7 @@ pub(crate) fn check(index: usize, operand: &MultiPolygon) -> Result<Vec<Bounds>,
                         return Err(Error::CoordinateOutOfRange { at, value });
                     }
                 }
-                bounds = bounds.with(point);
+                bounds = bounds.around(&Bounds::at(point));
             }
         }
         boxes.push(bounds);
@@ -60,19 +60,31 @@ impl Bounds {
         max: [f64::NEG_INFINITY; 2],
     };
 
-    fn with(self, p: &Point) -> Bounds {
+    /// The box of one point.
+    fn at(p: &Point) -> Bounds {
         Bounds {
-            min: [smaller(self.min[0], p.x), smaller(self.min[1], p.y)],
-            max: [larger(self.max[0], p.x), larger(self.max[1], p.y)],
+            min: [p.x, p.y],
+            max: [p.x, p.y],
+        }
+    }
+
+    /// The box around this one and `other`.
+    fn around(&self, other: &Bounds) -> Bounds {
+        Bounds {
+            min: [
+                smaller(self.min[0], other.min[0]),
+                smaller(self.min[1], other.min[1]),
+            ],
+            max: [
+                larger(self.max[0], other.max[0]),
+                larger(self.max[1], other.max[1]),
+            ],
         }
     }
 
     /// The box around `boxes`.
-    pub fn around(boxes: &[Bounds]) -> Bounds {
-        boxes.iter().fold(Bounds::EMPTY, |b, c| Bounds {
-            min: [smaller(b.min[0], c.min[0]), smaller(b.min[1], c.min[1])],
-            max: [larger(b.max[0], c.max[0]), larger(b.max[1], c.max[1])],
-        })
+    pub fn around_all(boxes: &[Bounds]) -> Bounds {
+        boxes.iter().fold(Bounds::EMPTY, |b, c| b.around(c))
     }
 
     pub fn max_x(&self) -> f64 {

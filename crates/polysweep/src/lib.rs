@@ -135,8 +135,8 @@ pub fn overlay_with_stats(
     // heuristic: a ring's winding number is 0 outside its box, so within the region the operand's interior, under
     // either fill rule, is that of the polygons kept.
     let (subject_box, clipping_box) = (
-        Bounds::around(&subject_boxes),
-        Bounds::around(&clipping_boxes),
+        Bounds::around_all(&subject_boxes),
+        Bounds::around_all(&clipping_boxes),
     );
     let (subject_region, clipping_region) = match operation {
         Operation::Intersection => (clipping_box, subject_box),
@@ -284,7 +284,7 @@ fn overlay_refs(
 ) -> Result<MultiPolygon, Error> {
     let mut boxes = Vec::with_capacity(operands.len());
     for (index, operand) in operands.iter().enumerate() {
-        boxes.push(Bounds::around(&input::check(index, operand)?));
+        boxes.push(Bounds::around_all(&input::check(index, operand)?));
     }
     if operands.is_empty() {
         return Ok(MultiPolygon::default());

@@ -14,11 +14,11 @@
 //!
 //! Each coordinate is taken along whichever line bounds its error more tightly, and straight from an
 //! axis-parallel line, where it is exact.
+//!
+//! The constants below are the terms of proven error bounds, not tolerances: they cannot change a result, only
+//! whether the float estimate is used or the exact path decides (which always gives the same rounding).
 
-use super::Line;
-
-/// The unit roundoff, 2^-53.
-const EPSILON: f64 = f64::EPSILON / 2.0;
+use super::{Line, UNIT_ROUNDOFF as EPSILON};
 
 /// The bounds below are computed in floats too; inflating them by this factor covers that rounding many times over.
 const BOUND_MARGIN: f64 = 1.0 + 1.0 / (1u64 << 20) as f64;
