@@ -17,6 +17,10 @@
 use crate::exact::{Exact, Line, SweepPoint};
 use std::cmp::Ordering;
 
+mod sort;
+
+use sort::ordered_bits;
+
 pub(crate) type EventId = u32;
 /// "No event" / "no node".
 pub(crate) const NONE: u32 = u32::MAX;
@@ -159,9 +163,9 @@ pub(crate) fn event_order(
 ///
 /// Where one edge ends and the next begins (a vertex of a ring: the edges come ring by ring), the two endpoints are
 /// sorted as one: half as many keys as endpoints. Input points are exact floats, so they are sorted by x as integer
-/// keys that order like the coordinates; those with one x, which then come out next to each other, are sorted again
-/// by y, and the endpoints at one point by [`order_at_point`]. The sort moves small keys and reads the compact
-/// edges, never the larger events.
+/// keys that order like the coordinates, by value (see [`sort`]); those with one x, which then come out
+/// next to each other, are sorted again by y, and the endpoints at one point by [`order_at_point`]. The sort moves
+/// small keys and reads the compact edges, never the larger events.
 pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEvent> {
     // An endpoint is `2 · edge + 1` for a left endpoint, `2 · edge` for a right one.
     let point = |end: u32| {
@@ -205,8 +209,8 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
     let mut keys: Vec<(u64, u32)> = (vertices.iter().enumerate())
         .map(|(v, ends)| (ordered_bits(point(ends[0])[0]), v as u32))
         .collect();
-    // By the key alone (cheaper than by the pair): keys that tie are ordered again below.
-    keys.sort_unstable_by_key(|&(x, _)| x);
+    // Keys that tie are ordered again below.
+    sort::sort_by_key(&mut keys);
     let mut order: Vec<u32> = Vec::with_capacity(2 * edges.len());
     let mut at_one_point = Vec::new();
     for same_x in keys.chunk_by_mut(|a, b| a.0 == b.0) {
@@ -263,16 +267,6 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
         event
     }));
     events
-}
-
-/// The bits of a finite float as an integer that orders like the float, with -0 equal to 0.
-fn ordered_bits(v: f64) -> u64 {
-    let bits = (v + 0.0).to_bits(); // -0 + 0 is +0
-    if bits >> 63 == 1 {
-        !bits
-    } else {
-        bits | 1 << 63
-    }
 }
 
 /// The event-point set Q of Fig. 5: the initial events, already in order (see [`initial_events`]), and a binary
