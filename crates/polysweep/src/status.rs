@@ -50,6 +50,39 @@ impl<K: Copy> Status<K> {
 
     /// Inserts `event` with its `key`; `below(key of an edge already in S)` says whether it goes below that edge.
     pub fn insert(&mut self, event: EventId, key: K, below: impl Fn(&K) -> bool) -> u32 {
+        let id = self.new_node(event, key);
+        if self.root == NONE {
+            self.root = id;
+            return id;
+        }
+        let mut current = self.root;
+        loop {
+            let side = if below(&self.nodes[current as usize].key) {
+                0
+            } else {
+                1
+            };
+            match self.nodes[current as usize].children[side] {
+                NONE => break self.attach(id, current, side),
+                child => current = child,
+            }
+        }
+        id
+    }
+
+    /// Inserts `event` with its `key` just above `node`, without a search; the caller guarantees that it belongs
+    /// there.
+    pub fn insert_above(&mut self, node: u32, event: EventId, key: K) -> u32 {
+        let id = self.new_node(event, key);
+        match self.nodes[node as usize].children[1] {
+            NONE => self.attach(id, node, 1),
+            // The next node is then the lowest of that subtree, which has no child below it.
+            _ => self.attach(id, self.next(node), 0),
+        }
+        id
+    }
+
+    fn new_node(&mut self, event: EventId, key: K) -> u32 {
         // xorshift: deterministic priorities, so runs are reproducible.
         self.random ^= self.random << 13;
         self.random ^= self.random >> 17;
@@ -62,7 +95,7 @@ impl<K: Copy> Status<K> {
             neighbours: [NONE; 2],
             priority: self.random,
         };
-        let id = match self.free.pop() {
+        match self.free.pop() {
             Some(id) => {
                 self.nodes[id as usize] = node;
                 id
@@ -71,37 +104,23 @@ impl<K: Copy> Status<K> {
                 self.nodes.push(node);
                 (self.nodes.len() - 1) as u32
             }
-        };
-        if self.root == NONE {
-            self.root = id;
-            return id;
         }
-        let mut current = self.root;
-        loop {
-            let side = if below(&self.nodes[current as usize].key) {
-                0
-            } else {
-                1
-            };
-            let child = self.nodes[current as usize].children[side];
-            if child == NONE {
-                self.nodes[current as usize].children[side] = id;
-                self.nodes[id as usize].parent = current;
-                // A new leaf lies between its parent and the parent's neighbour on that side.
-                let mut neighbours = [current; 2];
-                neighbours[side] = self.nodes[current as usize].neighbours[side];
-                self.link(id, neighbours);
-                break;
-            }
-            current = child;
-        }
+    }
+
+    /// Hangs the new node `id` as the empty child `side` of `parent`, then rotates it up to its place by priority.
+    fn attach(&mut self, id: u32, parent: u32, side: usize) {
+        self.nodes[parent as usize].children[side] = id;
+        self.nodes[id as usize].parent = parent;
+        // A new leaf lies between its parent and the parent's neighbour on that side.
+        let mut neighbours = [parent; 2];
+        neighbours[side] = self.nodes[parent as usize].neighbours[side];
+        self.link(id, neighbours);
         while let Some(parent) = self.parent(id) {
             if self.nodes[id as usize].priority >= self.nodes[parent as usize].priority {
                 break;
             }
             self.rotate_up(id);
         }
-        id
     }
 
     /// What `insert` was given for `node`.
@@ -250,6 +269,20 @@ mod tests {
             assert!(!in_order(&status).contains(&v));
         }
         let expected: Vec<u32> = (0..200).filter(|v| v % 3 != 0).collect();
+        assert_eq!(in_order(&status), expected);
+        // Insertion just above a node, without a search: 1000 + v above every remaining v, at both kinds of place
+        // (a node with an empty right subtree, and one whose successor is deeper down).
+        for &(v, node) in nodes.iter().filter(|(v, _)| v % 3 == 1) {
+            status.insert_above(node, 1000 + v, 1000 + v);
+        }
+        let with_above: Vec<u32> = (expected.iter())
+            .flat_map(|&v| [Some(v), (v % 3 == 1).then_some(1000 + v)])
+            .flatten()
+            .collect();
+        assert_eq!(in_order(&status), with_above);
+        for &(_, node) in nodes.iter().filter(|(v, _)| v % 3 == 1) {
+            status.remove(status.next(node));
+        }
         assert_eq!(in_order(&status), expected);
         // Neighbour queries agree with the in-order sequence.
         for &(v, node) in nodes.iter().filter(|(v, _)| v % 3 != 0) {

@@ -76,6 +76,8 @@ pub(crate) struct Sweep<'a> {
     pub stop_x: f64,
     /// The left event being inserted, or `NONE`.
     pub inserting: EventId,
+    /// The left event settled last, or `NONE` (see `place_after_last_left`).
+    last_left: EventId,
     /// Some event point passed within a few ulps of a neighbouring edge: rounding the output could move one across
     /// the other (see `note_close_calls`).
     pub close_call: bool,
@@ -105,6 +107,7 @@ impl<'a> Sweep<'a> {
             result,
             stop_x,
             inserting: NONE,
+            last_left: NONE,
             close_call: false,
             widest_clearance: crate::connect::clearance(
                 (edges.iter())
@@ -294,11 +297,35 @@ impl<'a> Sweep<'a> {
     }
 
     fn process_left(&mut self, e: EventId) {
-        // The order reads the events, not S, so S is taken out while it inserts.
-        let mut status = std::mem::take(&mut self.status);
-        let node = status.insert(e, self.in_status(e), |old| self.is_below(e, old));
-        self.status = status;
+        let node = match self.place_after_last_left(e) {
+            Some(below) => self.status.insert_above(below, e, self.in_status(e)),
+            None => {
+                // The order reads the events, not S, so S is taken out while it inserts.
+                let mut status = std::mem::take(&mut self.status);
+                let node = status.insert(e, self.in_status(e), |old| self.is_below(e, old));
+                self.status = status;
+                node
+            }
+        };
         self.settle(e, node, false);
+    }
+
+    /// Edges that start at one point come in Q one after the other, from the lowest up (§4), and each belongs just
+    /// above the one before, as a rule: an edge of S between them would pass through the point and have been split
+    /// there. So the node of the edge settled last, if it starts here and is still in S, is where to insert the
+    /// next one when the order confirms it against both neighbours: two comparisons instead of a search from the
+    /// root (not in the paper; a grid's corners and crossings have two edges starting at one point).
+    fn place_after_last_left(&self, e: EventId) -> Option<u32> {
+        let last = self.last_left;
+        if last == NONE || self.event(last).node == NONE {
+            return None;
+        }
+        let node = self.event(last).node;
+        let fits_below = |n: u32| n == NONE || self.is_below(e, self.status.key(n));
+        (self.exact.cmp_points(&self.point(last), &self.current) == Ordering::Equal
+            && !self.is_below(e, self.status.key(node))
+            && fits_below(self.status.next(node)))
+        .then_some(node)
     }
 
     /// The rest of Fig. 5 for left event `e`, once its edge is at `node` in S: a neighbour through its left
@@ -332,6 +359,7 @@ impl<'a> Sweep<'a> {
             self.possible_inter(e, above);
         }
         self.inserting = NONE;
+        self.last_left = e;
     }
 
     fn process_right(&mut self, r: EventId) {
