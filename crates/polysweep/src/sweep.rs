@@ -91,10 +91,10 @@ impl<'a> Sweep<'a> {
         let exact = Exact::default();
         let events = initial_events(edges, &exact);
         let queue = EventQueue::new(events.len());
-        // A ring vertex is two events at one point: room for that many vertices, and for a result edge per two
-        // input edges, so that these vectors seldom move.
+        // A ring vertex is two events at one point: room for that many vertices, and for a result edge per input
+        // edge (a union of polygons apart keeps them all), so that these vectors seldom move.
         let vertices = Vec::with_capacity(events.len() / 2);
-        let result = Vec::with_capacity(events.len() / 4);
+        let result = Vec::with_capacity(events.len() / 2);
         Sweep {
             edges,
             events,
@@ -231,18 +231,21 @@ impl<'a> Sweep<'a> {
     /// Rounding moves a constructed point by at most half an ulp, and an edge with such an end (even one made by a
     /// later split) by as much. So an event point can end up on the other side of a neighbouring edge only if it
     /// lies within a few ulps of it; `close_call` notes it, and the result is then swept again.
-    fn note_close_calls(&mut self, p: &SweepPoint, [below, above]: [EventId; 2]) {
-        if self.is_close_call(p, below) || self.is_close_call(p, above) {
+    /// `p` is checked against the neighbours of the edge at `node` in S.
+    fn note_close_calls(&mut self, p: &SweepPoint, node: u32) {
+        if self.is_close_call(p, self.status.prev(node))
+            || self.is_close_call(p, self.status.next(node))
+        {
             self.close_call = true;
         }
     }
 
-    /// Is `p` within a few ulps of the edge of left event `e` (`NONE`: no edge) without being one of its ends?
-    fn is_close_call(&self, p: &SweepPoint, e: EventId) -> bool {
-        if e == NONE {
+    /// Is `p` within a few ulps of the edge at `node` in S (`NONE`: no edge) without being one of its ends?
+    fn is_close_call(&self, p: &SweepPoint, node: u32) -> bool {
+        if node == NONE {
             return false;
         }
-        let line = self.input_edge(e).line;
+        let InStatus { line, event, .. } = *self.status.key(node);
         let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
         let cross = (p.approx[0] - line.a[0]) * dy - (p.approx[1] - line.a[1]) * dx;
         // distance = |cross| / |d|, compared squared to avoid the square root.
@@ -250,7 +253,7 @@ impl<'a> Sweep<'a> {
         if !within(self.widest_clearance) {
             return false;
         }
-        let (a, b) = (self.point(e), self.other_point(e));
+        let (a, b) = (self.point(event), self.other_point(event));
         let magnitude = [a.approx, b.approx, p.approx]
             .iter()
             .flatten()
@@ -348,7 +351,7 @@ impl<'a> Sweep<'a> {
                     return;
                 }
             }
-            self.note_close_calls(&p, [below, above]);
+            self.note_close_calls(&p, node);
         }
         self.set_flags(node);
 
@@ -369,7 +372,7 @@ impl<'a> Sweep<'a> {
             return; // merged into an overlapping edge (§7.2)
         }
         let (below, above) = (self.below(node), self.above(node));
-        self.note_close_calls(&self.current.clone(), [below, above]);
+        self.note_close_calls(&self.current.clone(), node);
         let edge = *self.status.key(node);
         if edge.flags.in_result {
             let (from, to) = (edge.vertex, self.current_vertex());
