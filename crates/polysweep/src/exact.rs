@@ -316,26 +316,28 @@ impl Exact {
     }
 
     /// Compares one coordinate of two points exactly.
+    ///
+    /// Rounding to nearest is monotone, so nearest floats that differ order the exact values the same way; equal
+    /// ones stand for equal values when both are exact. Only equal floats of which one at least is rounded need
+    /// the exact coordinates.
     #[inline]
     pub fn cmp_coordinate(&self, p: &SweepPoint, q: &SweepPoint, axis: usize) -> Ordering {
-        if p.representable[axis] && q.representable[axis] {
-            let (u, v) = (p.approx[axis], q.approx[axis]);
+        let (u, v) = (p.approx[axis], q.approx[axis]);
+        if u != v || (p.representable[axis] && q.representable[axis]) {
             return u.partial_cmp(&v).unwrap_or(Ordering::Equal); // -0 equals 0
         }
         self.cmp_coordinate_of_crossing(p, q, axis)
     }
 
+    /// [`Self::cmp_coordinate`] of two points whose coordinate rounds to one float, one of them at least a
+    /// crossing's rounded coordinate.
     #[inline(never)]
     fn cmp_coordinate_of_crossing(&self, p: &SweepPoint, q: &SweepPoint, axis: usize) -> Ordering {
         if p.crossing == q.crossing {
             return Ordering::Equal; // the events of one crossing (`INPUT` points are representable)
         }
-        let (u, v) = (p.approx[axis], q.approx[axis]);
-        let bound = 2.0 * (Self::error(p, axis) + Self::error(q, axis));
-        filtered_sign(u - v, bound).unwrap_or_else(|| {
-            let ((pn, pd), (qn, qd)) = (self.fraction(p, axis), self.fraction(q, axis));
-            (&(&pn * &qd) - &(&qn * &pd)).sign()
-        })
+        let ((pn, pd), (qn, qd)) = (self.fraction(p, axis), self.fraction(q, axis));
+        (&(&pn * &qd) - &(&qn * &pd)).sign()
     }
 
     /// The sweep order of points: left to right, and bottom to top at equal x (§4, §7.1).
@@ -487,6 +489,68 @@ mod tests {
             "1/3 is not a float"
         );
         assert_eq!(x.approx, [1.0 / 3.0, 1.0 / 3.0]);
+    }
+
+    #[test]
+    fn coordinates_compare_exactly_around_crossings() {
+        // Crossings of random lines, each coordinate compared, against the exact fractions, with its own rounding
+        // and the floats next to it (as input points), and with the other crossings.
+        let mut exact = Exact::default();
+        let mut random = crate::test_random::unit(41);
+        let mut crossings = Vec::new();
+        for _ in 0..200 {
+            let mut point = || [random() * 8.0 - 4.0, random() * 8.0 - 4.0];
+            let (l, m) = (
+                Line {
+                    a: point(),
+                    b: point(),
+                },
+                Line {
+                    a: point(),
+                    b: point(),
+                },
+            );
+            if exact.orient(&l, &SweepPoint::input(m.a))
+                != exact.orient(&l, &SweepPoint::input(m.b))
+            {
+                crossings.push(exact.crossing(&l, &m));
+            }
+        }
+        assert!(crossings.len() > 50);
+        let exactly = |exact: &Exact, p: &SweepPoint, q: &SweepPoint, axis: usize| {
+            let ((pn, pd), (qn, qd)) = (exact.fraction(p, axis), exact.fraction(q, axis));
+            (&(&pn * &qd) - &(&qn * &pd)).sign()
+        };
+        for p in &crossings {
+            for axis in 0..2 {
+                let v = p.approx[axis];
+                for f in [
+                    v.next_down().next_down(),
+                    v.next_down(),
+                    v,
+                    v.next_up(),
+                    v.next_up().next_up(),
+                ] {
+                    let mut q = p.approx;
+                    q[axis] = f;
+                    let q = SweepPoint::input(q);
+                    assert_eq!(
+                        exact.cmp_coordinate(p, &q, axis),
+                        exactly(&exact, p, &q, axis)
+                    );
+                    assert_eq!(
+                        exact.cmp_coordinate(&q, p, axis),
+                        exactly(&exact, &q, p, axis)
+                    );
+                }
+                for q in &crossings {
+                    assert_eq!(
+                        exact.cmp_coordinate(p, q, axis),
+                        exactly(&exact, p, q, axis)
+                    );
+                }
+            }
+        }
     }
 
     #[test]
