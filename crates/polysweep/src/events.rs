@@ -229,7 +229,17 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
                     order.push(ends[0]);
                     continue;
                 }
-                if order_at_point(exact, &at_point(ends[1]), &at_point(ends[0])) == Ordering::Less {
+                // Where the ring goes on through the vertex (one edge ends, the next begins), the right endpoint
+                // comes first (§4): the lines need not be read.
+                let second_first = match (ends[0] % 2, ends[1] % 2) {
+                    (1, 0) => true,
+                    (0, 1) => false,
+                    _ => {
+                        order_at_point(exact, &at_point(ends[1]), &at_point(ends[0]))
+                            == Ordering::Less
+                    }
+                };
+                if second_first {
                     ends.swap(0, 1);
                 }
                 order.extend(ends);
