@@ -199,6 +199,7 @@ impl<'a> Sweep<'a> {
     }
 
     /// The status order: is the new edge `e` below the edge `old` of S?
+    #[inline]
     fn is_below(&self, e: EventId, old: &InStatus) -> bool {
         let new = self.event(e);
         let side = match self.exact.orient(&old.line, &new.point) {
@@ -241,6 +242,7 @@ impl<'a> Sweep<'a> {
     }
 
     /// Is `p` within a few ulps of the edge at `node` in S (`NONE`: no edge) without being one of its ends?
+    #[inline]
     fn is_close_call(&self, p: &SweepPoint, node: u32) -> bool {
         if node == NONE {
             return false;
