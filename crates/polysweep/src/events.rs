@@ -63,11 +63,20 @@ impl SweepEvent {
         self.segment_and_side & LEFT != 0
     }
 
-    /// An event of input edge `segment`, `edge`.
-    pub fn new(point: SweepPoint, left: bool, segment: u32, edge: &InputEdge) -> Self {
+    /// The left or right event of input edge `segment`, `edge`, whose other event is `other`.
+    pub fn initial(edge: &InputEdge, segment: u32, left: bool, other: EventId) -> Self {
         let mut winding = [0; 2];
         winding[edge.operand as usize] = edge.winding;
-        Self::unprocessed(point, left, segment, winding)
+        let (a, b) = (
+            SweepPoint::input(edge.line.a),
+            SweepPoint::input(edge.line.b),
+        );
+        let (point, other_point) = if left { (a, b) } else { (b, a) };
+        SweepEvent {
+            other,
+            other_point,
+            ..Self::unprocessed(point, left, segment, winding)
+        }
     }
 
     /// A copy of this edge's identity (segment, winding) for a new event of one of its fragments.
@@ -266,15 +275,8 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
     let mut events = Vec::with_capacity(order.len() + order.len() / 8);
     events.extend(order.iter().map(|&end| {
         let segment = end / 2;
-        let mut event = SweepEvent::new(
-            SweepPoint::input(point(end)),
-            end % 2 == 1,
-            segment,
-            &edges[segment as usize],
-        );
-        event.other = position[end as usize ^ 1];
-        event.other_point = SweepPoint::input(point(end ^ 1));
-        event
+        let other = position[end as usize ^ 1];
+        SweepEvent::initial(&edges[segment as usize], segment, end % 2 == 1, other)
     }));
     events
 }
@@ -426,8 +428,13 @@ mod tests {
         };
         let point = SweepPoint::input([0.0, 0.0]);
         for (segment, left) in [(0, true), (7, false), (LEFT - 1, true), (LEFT - 1, false)] {
-            let event = SweepEvent::new(point, left, segment, &edge);
+            let event = SweepEvent::initial(&edge, segment, left, 5);
             assert_eq!((event.segment(), event.left()), (segment, left));
+            assert_eq!(event.winding, [0, -1]);
+            assert_eq!(
+                event.point.approx,
+                if left { edge.line.a } else { edge.line.b }
+            );
             let fragment = event.fragment(point, !left, 3, point);
             assert_eq!((fragment.segment(), fragment.left()), (segment, !left));
         }
