@@ -91,9 +91,10 @@ impl<'a> Sweep<'a> {
         let exact = Exact::default();
         let events = initial_events(edges, &exact);
         let queue = EventQueue::new(events.len());
-        // A ring vertex is two events at one point: room for that many vertices, and for a result edge per input
-        // edge (a union of polygons apart keeps them all), so that these vectors seldom move.
-        let vertices = Vec::with_capacity(events.len() / 2);
+        // Every vertex has two events at least (a ring vertex two, a crossing four): room for as many vertices as
+        // the events have room for, and for a result edge per input edge (a union of polygons apart keeps them
+        // all), so that these vectors seldom move.
+        let vertices = Vec::with_capacity(events.capacity() / 2);
         let result = Vec::with_capacity(events.len() / 2);
         Sweep {
             edges,
