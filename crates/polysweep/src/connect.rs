@@ -69,8 +69,35 @@ fn next_edge(
     })
 }
 
+/// Rings as lists of edge indices, one after the other in one vector (rather than a vector each: a result can
+/// have tens of thousands of rings).
+#[derive(Default)]
+struct Rings {
+    edges: Vec<usize>,
+    /// Where each ring's edges begin in `edges`, and where the last one ends.
+    starts: Vec<usize>,
+}
+
+impl Rings {
+    fn push(&mut self, ring: &[usize]) {
+        if self.starts.is_empty() {
+            self.starts.push(0);
+        }
+        self.edges.extend_from_slice(ring);
+        self.starts.push(self.edges.len());
+    }
+
+    fn len(&self) -> usize {
+        self.starts.len().saturating_sub(1)
+    }
+
+    fn iter(&self) -> impl Iterator<Item = &[usize]> {
+        self.starts.windows(2).map(|w| &self.edges[w[0]..w[1]])
+    }
+}
+
 /// Walks the result edges into simple rings, each as its list of edge indices.
-fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge]) -> Vec<Vec<usize>> {
+fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge]) -> Rings {
     // Edges leaving each vertex, bucketed (counting sort by `from`).
     let mut first_out = vec![0usize; vertex_count + 1];
     for e in edges {
@@ -88,7 +115,7 @@ fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge]) -> Vec<Ve
     // Edges that rounding shrank to a point are no part of any ring.
     let mut used: Vec<bool> = edges.iter().map(|e| e.from == e.to).collect();
     let mut position_on_path = vec![NONE; vertex_count];
-    let mut rings = Vec::new();
+    let mut rings = Rings::default();
     // The path walked from `start`: its vertices and edges (kept from one start to the next, for their room).
     let (mut path_vertices, mut path_edges): (Vec<u32>, Vec<usize>) = (Vec::new(), Vec::new());
     for &start in &outgoing {
@@ -108,7 +135,7 @@ fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge]) -> Vec<Ve
             if at != NONE {
                 // Back at a vertex of the path: the loop since then is a ring.
                 let at = at as usize;
-                rings.push(path_edges[at..].to_vec());
+                rings.push(&path_edges[at..]);
                 path_edges.truncate(at);
                 for &w in &path_vertices[at + 1..] {
                     position_on_path[w as usize] = NONE;

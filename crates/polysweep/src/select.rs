@@ -100,6 +100,7 @@ impl Selection {
 
     /// Fig. 9 generalised: the flags of an edge with `winding`, vertical or not, given the edge below it in S (its
     /// left event, flags and whether it is vertical), if any.
+    #[inline]
     pub fn flags(
         &self,
         winding: [i32; 2],
