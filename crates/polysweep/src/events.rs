@@ -329,6 +329,7 @@ impl EventQueue {
         self.head(order).map(|(event, _)| event)
     }
 
+    #[inline(always)]
     pub fn pop(&mut self, order: impl Fn(EventId, EventId) -> Ordering) -> Option<EventId> {
         let (next, from_heap) = self.head(&order)?;
         if !from_heap {

@@ -24,6 +24,7 @@ use std::cmp::Ordering::Equal;
 
 impl Sweep<'_> {
     /// possibleInter (Fig. 5) of two edges, given as left events, `lower` below `upper` in S.
+    #[inline(always)]
     pub(crate) fn possible_inter(&mut self, lower: EventId, upper: EventId) {
         let (a1, b1) = (self.point(lower), self.other_point(lower));
         let (a2, b2) = (self.point(upper), self.other_point(upper));

@@ -234,6 +234,7 @@ impl<'a> Sweep<'a> {
     /// later split) by as much. So an event point can end up on the other side of a neighbouring edge only if it
     /// lies within a few ulps of it; `close_call` notes it, and the result is then swept again.
     /// `p` is checked against the neighbours of the edge at `node` in S.
+    #[inline(always)]
     fn note_close_calls(&mut self, p: &SweepPoint, node: u32) {
         if self.is_close_call(p, self.status.prev(node))
             || self.is_close_call(p, self.status.next(node))
@@ -243,7 +244,7 @@ impl<'a> Sweep<'a> {
     }
 
     /// Is `p` within a few ulps of the edge at `node` in S (`NONE`: no edge) without being one of its ends?
-    #[inline]
+    #[inline(always)]
     fn is_close_call(&self, p: &SweepPoint, node: u32) -> bool {
         if node == NONE {
             return false;
@@ -338,6 +339,7 @@ impl<'a> Sweep<'a> {
     /// endpoint is split first; then the flags of Fig. 9 and possibleInter with both neighbours.
     /// `neighbours_checked`: the caller has made sure that neither neighbour passes through the point and has
     /// noted close calls with them (the in-place step, whose neighbours are those of the edge that ended).
+    #[inline(always)]
     fn settle(&mut self, e: EventId, node: u32, neighbours_checked: bool) {
         self.inserting = e;
         self.events[e as usize].node = node;
