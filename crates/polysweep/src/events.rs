@@ -198,42 +198,42 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
     };
     // The endpoint where edge `j` begins along its ring (it ends at the other one).
     let begin = |j: usize| 2 * j as u32 + u32::from(edges[j].winding > 0);
-    let mut vertices: Vec<[u32; 2]> = Vec::with_capacity(edges.len() + 1);
+    // A vertex's key (its x, as an integer that orders like it) and its two endpoints (or one and `NONE`).
+    let mut vertices: Vec<(u64, [u32; 2])> = Vec::with_capacity(edges.len() + 1);
+    let mut vertex = |ends: [u32; 2]| vertices.push((ordered_bits(point(ends[0])[0]), ends));
     let mut chain_start = 0; // the first edge of the current chain of edges meeting end to beginning
     for j in 0..edges.len() {
         let end = begin(j) ^ 1;
         if j + 1 < edges.len() && point(begin(j + 1)) == point(end) {
-            vertices.push([end, begin(j + 1)]);
+            vertex([end, begin(j + 1)]);
             continue;
         }
         // The chain ends here: a closed ring if it ends where it began (otherwise two loose endpoints).
         let first = begin(chain_start);
         if point(first) == point(end) {
-            vertices.push([end, first]);
+            vertex([end, first]);
         } else {
-            vertices.extend([[end, NONE], [first, NONE]]);
+            vertex([end, NONE]);
+            vertex([first, NONE]);
         }
         chain_start = j + 1;
     }
-    let mut keys: Vec<(u64, u32)> = (vertices.iter().enumerate())
-        .map(|(v, ends)| (ordered_bits(point(ends[0])[0]), v as u32))
-        .collect();
     // Keys that tie are ordered again below.
-    sort::sort_by_key(&mut keys);
+    sort::sort_by_key(&mut vertices);
     let mut order: Vec<u32> = Vec::with_capacity(2 * edges.len());
     let mut at_one_point = Vec::new();
-    for same_x in keys.chunk_by_mut(|a, b| a.0 == b.0) {
+    for same_x in vertices.chunk_by_mut(|a, b| a.0 == b.0) {
         if same_x.len() > 1 {
             // Long runs share an x (a column of a grid): by y as keys again.
-            for key in same_x.iter_mut() {
-                key.0 = ordered_bits(point(vertices[key.1 as usize][0])[1]);
+            for (key, ends) in same_x.iter_mut() {
+                *key = ordered_bits(point(ends[0])[1]);
             }
             same_x.sort_unstable_by_key(|&(y, _)| y);
         }
         for same_point in same_x.chunk_by(|a, b| a.0 == b.0) {
-            if let [vertex] = same_point {
+            if let [(_, ends)] = same_point {
                 // The usual case, one vertex at its point: its two endpoints in order, without a sort.
-                let mut ends = vertices[vertex.1 as usize];
+                let mut ends = *ends;
                 if ends[1] == NONE {
                     order.push(ends[0]);
                     continue;
@@ -257,7 +257,7 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
             at_one_point.clear();
             at_one_point.extend(
                 (same_point.iter())
-                    .flat_map(|key| vertices[key.1 as usize])
+                    .flat_map(|&(_, ends)| ends)
                     .filter(|&end| end != NONE),
             );
             at_one_point

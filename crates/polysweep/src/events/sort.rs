@@ -8,9 +8,6 @@
 //! buckets cost more than they save. Keys that bunch in few buckets (a grid's columns, a cluster far from an
 //! outlier) are sorted there by comparison, as before.
 
-/// An integer that orders like a coordinate, and what it stands for.
-pub(crate) type Keyed = (u64, u32);
-
 /// The bits of a finite float as an integer that orders like the float, with -0 equal to 0.
 pub(crate) fn ordered_bits(v: f64) -> u64 {
     let bits = (v + 0.0).to_bits(); // -0 + 0 is +0
@@ -35,7 +32,8 @@ fn value(key: u64) -> f64 {
 /// A key's bucket is its value's place between the smallest and the largest, scaled to the number of buckets and
 /// rounded down. Every step of that (a subtraction, a product with a positive factor, rounding down) is monotone
 /// in floating point too, so a smaller key never lands in a later bucket, and sorting each bucket sorts them all.
-pub(crate) fn sort_by_key(items: &mut Vec<Keyed>) {
+/// Each item is an integer that orders like a coordinate, and what it stands for.
+pub(crate) fn sort_by_key<T: Copy + Default>(items: &mut Vec<(u64, T)>) {
     let (Some(low), Some(high)) = (
         items.iter().map(|&(key, _)| key).min(),
         items.iter().map(|&(key, _)| key).max(),
@@ -58,7 +56,7 @@ pub(crate) fn sort_by_key(items: &mut Vec<Keyed>) {
     for b in 1..=buckets {
         starts[b] += starts[b - 1];
     }
-    let mut sorted = vec![(0, 0); items.len()];
+    let mut sorted = vec![(0, T::default()); items.len()];
     let mut next = starts.clone();
     for &item in items.iter() {
         let slot = &mut next[bucket(item.0)];
@@ -125,13 +123,13 @@ mod tests {
                 .collect(),
         );
         for values in cases {
-            let mut items: Vec<Keyed> = (values.iter().enumerate())
+            let mut items: Vec<(u64, u32)> = (values.iter().enumerate())
                 .map(|(i, &v)| (ordered_bits(v), i as u32))
                 .collect();
             let mut expected = items.clone();
             sort_by_key(&mut items);
             expected.sort_unstable_by_key(|&(key, _)| key);
-            let keys = |items: &[Keyed]| items.iter().map(|&(key, _)| key).collect::<Vec<_>>();
+            let keys = |items: &[(u64, u32)]| items.iter().map(|&(key, _)| key).collect::<Vec<_>>();
             assert_eq!(keys(&items), keys(&expected), "{} values", values.len());
             let mut ids: Vec<u32> = items.iter().map(|&(_, id)| id).collect();
             ids.sort_unstable();
