@@ -69,7 +69,7 @@ impl Bounds {
     }
 
     /// The box around this one and `other`.
-    fn around(&self, other: &Bounds) -> Bounds {
+    pub fn around(&self, other: &Bounds) -> Bounds {
         Bounds {
             min: [
                 smaller(self.min[0], other.min[0]),
@@ -89,6 +89,15 @@ impl Bounds {
 
     pub fn max_x(&self) -> f64 {
         self.max[0]
+    }
+
+    /// The largest magnitude of a coordinate in the box (0 for an empty box): every point the sweep makes from
+    /// edges within the box lies within it, crossings included.
+    pub fn magnitude(&self) -> f64 {
+        if self.min[0] > self.max[0] {
+            return 0.0;
+        }
+        (self.min.iter().chain(&self.max)).fold(0.0, |m, v| larger(m, v.abs()))
     }
 
     pub fn meets(&self, other: &Bounds) -> bool {

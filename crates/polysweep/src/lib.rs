@@ -157,6 +157,7 @@ pub fn overlay_with_stats(
             fill_rule: options.fill_rule,
         },
         stop_x(operation, &[subject_box, clipping_box]),
+        subject_box.around(&clipping_box).magnitude(),
     ))
 }
 
@@ -178,10 +179,16 @@ fn stop_x(operation: Operation, boxes: &[Bounds]) -> f64 {
 /// the bound only guarantees that the function returns.
 const MAX_REPAIR_PASSES: usize = 4;
 
-/// The sweep of Fig. 5 over `edges`, then the result rounded to f64 and, where rounding may have broken it,
-/// repaired by sweeping it again (see the robustness page).
-fn sweep(edges: Vec<InputEdge>, selection: Selection, stop_x: f64) -> (MultiPolygon, Stats) {
-    let (mut result, mut stats, mut suspect) = sweep_once(&edges, selection, stop_x);
+/// The sweep of Fig. 5 over `edges`, whose coordinates are of magnitude `magnitude` at most, then the result
+/// rounded to f64 and, where rounding may have broken it, repaired by sweeping it again (see the robustness page;
+/// the result lies within the edges' box, so within the same magnitude).
+fn sweep(
+    edges: Vec<InputEdge>,
+    selection: Selection,
+    stop_x: f64,
+    magnitude: f64,
+) -> (MultiPolygon, Stats) {
+    let (mut result, mut stats, mut suspect) = sweep_once(&edges, selection, stop_x, magnitude);
     stats.input_edges = edges.len();
     while suspect && stats.repair_passes < MAX_REPAIR_PASSES {
         let mut edges = Vec::new();
@@ -190,7 +197,7 @@ fn sweep(edges: Vec<InputEdge>, selection: Selection, stop_x: f64) -> (MultiPoly
             operation: Operation::Union,
             operands: 1,
         };
-        (result, _, suspect) = sweep_once(&edges, repair, f64::INFINITY);
+        (result, _, suspect) = sweep_once(&edges, repair, f64::INFINITY, magnitude);
         stats.repair_passes += 1;
     }
     (result, stats)
@@ -200,8 +207,9 @@ fn sweep_once(
     edges: &[InputEdge],
     selection: Selection,
     stop_x: f64,
+    magnitude: f64,
 ) -> (MultiPolygon, Stats, bool) {
-    let mut sweep = sweep::Sweep::new(edges, selection, stop_x);
+    let mut sweep = sweep::Sweep::new(edges, selection, stop_x, magnitude);
     sweep.run();
     let stats = Stats {
         crossings: sweep.exact.crossing_count(),
@@ -297,7 +305,7 @@ fn overlay_refs(
     for (index, operand) in operands.iter().enumerate() {
         let mut own = Vec::new();
         input::add_edges(&mut own, operand, 0, |_| true);
-        let (valid, _) = sweep(own, normalise, f64::INFINITY);
+        let (valid, _) = sweep(own, normalise, f64::INFINITY, boxes[index].magnitude());
         let slot = u8::from(operation == Operation::Difference && index > 0);
         input::add_edges(&mut edges, &valid, slot, |_| true);
     }
@@ -310,7 +318,8 @@ fn overlay_refs(
         operation,
         operands: in_slot_0,
     };
-    Ok(sweep(edges, selection, stop_x(operation, &boxes)).0)
+    let magnitude = Bounds::around_all(&boxes).magnitude();
+    Ok(sweep(edges, selection, stop_x(operation, &boxes), magnitude).0)
 }
 
 /// The union of all operands.

@@ -81,13 +81,14 @@ pub(crate) struct Sweep<'a> {
     /// Some event point passed within a few ulps of a neighbouring edge: rounding the output could move one across
     /// the other (see `note_close_calls`).
     pub close_call: bool,
-    /// The clearance of the largest coordinate of the input, which bounds every point's (crossings lie between
-    /// input vertices): edges farther than this from a point need no closer look.
+    /// The clearance of the largest magnitude of the input's coordinates, which bounds every point's (crossings
+    /// lie between input vertices): edges farther than this from a point need no closer look.
     widest_clearance: f64,
 }
 
 impl<'a> Sweep<'a> {
-    pub fn new(edges: &'a [InputEdge], selection: Selection, stop_x: f64) -> Self {
+    /// A sweep of `edges`, all within coordinates of magnitude `magnitude`.
+    pub fn new(edges: &'a [InputEdge], selection: Selection, stop_x: f64, magnitude: f64) -> Self {
         let exact = Exact::default();
         let events = initial_events(edges, &exact);
         let queue = EventQueue::new(events.len());
@@ -110,12 +111,7 @@ impl<'a> Sweep<'a> {
             inserting: NONE,
             last_left: NONE,
             close_call: false,
-            widest_clearance: crate::connect::clearance(
-                (edges.iter())
-                    .flat_map(|edge| [edge.line.a, edge.line.b])
-                    .flatten()
-                    .fold(0.0f64, |m, v| larger(m, v.abs())),
-            ),
+            widest_clearance: crate::connect::clearance(magnitude),
         }
     }
 
