@@ -417,28 +417,32 @@ impl<'a> Sweep<'a> {
         if !event.left() || self.exact.cmp_points(&event.point, &self.current) != Ordering::Equal {
             return None;
         }
-        // A neighbour whose line misses the point is on the side the orientation says (`is_below` at the new
-        // edge's left endpoint, asked once). One whose line holds the point ends or starts there, or passes through
-        // it: that one is split first (see `settle`), which the ordinary path handles.
-        let fits = |n: u32, above: bool| {
-            if n == NONE {
-                return true;
-            }
-            let key = self.status.key(n);
-            match self.exact.orient(&key.line, &self.current) {
-                Ordering::Equal => {
-                    !self.strictly_inside(key.event, &self.current)
-                        && self.is_below(next, key) == above
-                }
-                side => (side == Ordering::Less) == above,
-            }
-        };
-        if !(fits(self.status.prev(node), false) && fits(self.status.next(node), true)) {
+        if !(self.fits_beside(next, self.status.prev(node), false)
+            && self.fits_beside(next, self.status.next(node), true))
+        {
             return None;
         }
+        // At the current point, so at the current output vertex.
         self.queue
             .pop(|a, b| event_order(&self.events, self.edges, &self.exact, a, b));
-        self.assign_vertex(next);
         Some(next)
+    }
+
+    /// Does left event `next`, at the current point, belong on its side (above or not) of the edge at node `n` of
+    /// S (`NONE`: no edge)? A neighbour whose line misses the point is on the side the orientation says
+    /// (`is_below` at the new edge's left endpoint, asked once). One whose line holds the point ends or starts
+    /// there, or passes through it: that one is split first (see `settle`), which the ordinary path handles.
+    #[inline(always)]
+    fn fits_beside(&self, next: EventId, n: u32, above: bool) -> bool {
+        if n == NONE {
+            return true;
+        }
+        let key = self.status.key(n);
+        match self.exact.orient(&key.line, &self.current) {
+            Ordering::Equal => {
+                !self.strictly_inside(key.event, &self.current) && self.is_below(next, key) == above
+            }
+            side => (side == Ordering::Less) == above,
+        }
     }
 }
