@@ -317,9 +317,11 @@ impl Exact {
 
     /// Compares one coordinate of two points exactly.
     ///
-    /// Rounding to nearest is monotone, so nearest floats that differ order the exact values the same way; equal
-    /// ones stand for equal values when both are exact. Only equal floats of which one at least is rounded need
-    /// the exact coordinates.
+    /// Every constructed coordinate is its exact value rounded to nearest (see [`estimate`] and
+    /// `Dyadic::divide_to_f64`; the cold path beyond the input range may round a subnormal twice, which is still
+    /// monotone). Rounding that is monotone and leaves floats as they are orders the exact values as it orders the
+    /// floats, wherever the floats differ; equal floats stand for equal values when both are exact. Only equal
+    /// floats of which one at least is rounded need the exact coordinates.
     #[inline]
     pub fn cmp_coordinate(&self, p: &SweepPoint, q: &SweepPoint, axis: usize) -> Ordering {
         let (u, v) = (p.approx[axis], q.approx[axis]);
