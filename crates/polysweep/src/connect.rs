@@ -231,12 +231,14 @@ fn merge_rounded(vertices: &[SweepPoint], edges: &[ResultEdge]) -> (Vec<u32>, Ve
         (ids[e.from as usize], ids[e.to as usize]) = (0, 0);
     }
     let mut points: Vec<Point> = Vec::with_capacity(edges.len());
-    // Rounding is monotone, so the vertices that round to one x are consecutive in sweep order. Distinct input
-    // vertices are distinct floats: only a block of equal x that holds a crossing needs looking into, by a map of
-    // its rounded points (a grid's column can hold thousands). The map is keyed by both coordinates and never
+    // Rounding is monotone, so the vertices that round to one x are consecutive in sweep order. While they all
+    // have that x exactly (input vertices, and crossings on a vertical line or a grid's column), they come in y
+    // order, so those that round to one point are consecutive too: each is compared with the one before. Once a
+    // crossing whose x is rounded joins the block, exact x and y order no longer agree with the rounded point's,
+    // and the block's points go into a map of rounded points. The map is keyed by both coordinates and never
     // cleared, so a large block does not make every later block pay for its size.
     let mut block: Vec<usize> = Vec::new();
-    let mut block_has_crossing = false;
+    let mut block_has_rounded_x = false;
     // A fixed-seed fast hash: SipHash, std's default, was 5% of the time at 32,768 squares.
     let mut in_crossing_blocks: HashMap<[u64; 2], u32, foldhash::fast::FixedState> =
         HashMap::default();
@@ -248,18 +250,22 @@ fn merge_rounded(vertices: &[SweepPoint], edges: &[ResultEdge]) -> (Vec<u32>, Ve
         let [x, y] = v.approx;
         if block.last().is_some_and(|&j| vertices[j].approx[0] != x) {
             block.clear();
-            block_has_crossing = false;
+            block_has_rounded_x = false;
         }
-        if !v.is_input() && !block_has_crossing {
-            block_has_crossing = true;
+        if !v.is_exact(0) && !block_has_rounded_x {
+            block_has_rounded_x = true;
             for &j in &block {
                 in_crossing_blocks.insert(key(vertices[j].approx), ids[j]);
             }
         }
-        let same = if block_has_crossing {
+        let same = if block_has_rounded_x {
             in_crossing_blocks.get(&key(v.approx)).copied()
         } else {
-            None
+            // (Two input vertices are distinct floats: only a crossing can round onto its neighbour.)
+            (block.last())
+                .filter(|&&j| !(v.is_input() && vertices[j].is_input()))
+                .filter(|&&j| vertices[j].approx == v.approx)
+                .map(|&j| ids[j])
         };
         let id = same.unwrap_or_else(|| {
             points.push(Point::new(x, y));
@@ -267,7 +273,7 @@ fn merge_rounded(vertices: &[SweepPoint], edges: &[ResultEdge]) -> (Vec<u32>, Ve
         });
         ids[i] = id;
         block.push(i);
-        if block_has_crossing {
+        if block_has_rounded_x {
             in_crossing_blocks.insert(key(v.approx), id);
         }
     }
@@ -420,6 +426,66 @@ pub(crate) fn connect(
 mod tests {
     use super::*;
     use crate::exact::Line;
+
+    #[test]
+    fn exact_points_that_round_to_one_point_become_one_vertex() {
+        let mut exact = Exact::default();
+        let line = |a: [f64; 2], b: [f64; 2]| Line { a, b };
+        // On the column x = 1: a crossing with a slanted line, whose y (1 + 2^-40) / 3 is no float, and the input
+        // vertex at its rounding; they come next to each other in sweep order.
+        let on_column = exact.crossing(
+            &line([1.0, -5.0], [1.0, 5.0]),
+            &line([0.0, 0.0], [3.0, 1.0 + 2f64.powi(-40)]),
+        );
+        // Off any column: the crossing (6/5, 2/5) of two slanted lines, whose x rounds down, and the input vertex
+        // at its rounding; an input vertex above that one comes between them in sweep order.
+        let off_column =
+            exact.crossing(&line([0.0, 0.0], [3.0, 1.0]), &line([0.0, 1.0], [2.0, 0.0]));
+        let [x, y] = off_column.approx;
+        let mut vertices = vec![
+            SweepPoint::input([1.0, 0.0]),
+            SweepPoint::input(on_column.approx),
+            on_column,
+            SweepPoint::input([1.0, 2.0]),
+            SweepPoint::input([x, y]),
+            SweepPoint::input([x, y + 1.0]),
+            off_column,
+        ];
+        vertices.sort_by(|p, q| exact.cmp_points(p, q));
+        let position = |p: &SweepPoint| {
+            (vertices.iter())
+                .position(|v| {
+                    exact.cmp_points(v, p) == Ordering::Equal && v.is_input() == p.is_input()
+                })
+                .unwrap()
+        };
+        let pairs = [
+            (
+                position(&on_column),
+                position(&SweepPoint::input(on_column.approx)),
+            ),
+            (position(&off_column), position(&SweepPoint::input([x, y]))),
+        ];
+        assert_eq!(
+            pairs[1].0,
+            pairs[1].1 + 2,
+            "one vertex comes between the second pair"
+        );
+        let edges: Vec<ResultEdge> = (0..vertices.len() - 1)
+            .map(|i| ResultEdge {
+                from: i as u32,
+                to: i as u32 + 1,
+                segment: 0,
+                forward: true,
+                below: NONE,
+            })
+            .collect();
+        let (ids, points) = merge_rounded(&vertices, &edges);
+        for (a, b) in pairs {
+            assert_eq!(ids[a], ids[b]);
+        }
+        assert_eq!(points.len(), vertices.len() - 2);
+    }
 
     #[test]
     fn rounding_check_finds_exactly_the_points_within_a_few_ulps_of_a_crossing() {

@@ -244,6 +244,11 @@ impl SweepPoint {
     pub fn is_input(&self) -> bool {
         self.crossing == INPUT
     }
+
+    /// Is the coordinate on `axis` exactly `approx[axis]`?
+    pub fn is_exact(&self, axis: usize) -> bool {
+        self.representable[axis]
+    }
 }
 
 /// Relative error bound of the float filters. The filtered expressions have at most four rounded operations in a
