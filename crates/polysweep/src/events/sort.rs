@@ -50,16 +50,21 @@ pub(crate) fn sort_by_key<T: Copy + Default>(items: &mut Vec<(u64, T)>) {
     let bucket = |key: u64| (((value(key) - low) * scale) as usize).min(buckets - 1);
     // `starts[b]`: where bucket `b` begins in the sorted order, once summed up.
     let mut starts = vec![0u32; buckets + 1];
-    for &(key, _) in items.iter() {
-        starts[bucket(key) + 1] += 1;
-    }
+    // Each item's bucket, worked out once for the count and the move.
+    let of_item: Vec<u32> = (items.iter())
+        .map(|&(key, _)| {
+            let b = bucket(key);
+            starts[b + 1] += 1;
+            b as u32
+        })
+        .collect();
     for b in 1..=buckets {
         starts[b] += starts[b - 1];
     }
     let mut sorted = vec![(0, T::default()); items.len()];
     let mut next = starts.clone();
-    for &item in items.iter() {
-        let slot = &mut next[bucket(item.0)];
+    for (&item, &b) in items.iter().zip(&of_item) {
+        let slot = &mut next[b as usize];
         sorted[*slot as usize] = item;
         *slot += 1;
     }
