@@ -264,7 +264,7 @@ fn merge_rounded(vertices: &[SweepPoint], edges: &[ResultEdge]) -> (Vec<u32>, Ve
             // (Two input vertices are distinct floats: only a crossing can round onto its neighbour.)
             (block.last())
                 .filter(|&&j| !(v.is_input() && vertices[j].is_input()))
-                .filter(|&&j| vertices[j].approx == v.approx)
+                .filter(|&&j| { vertices[j].approx } == [x, y])
                 .map(|&j| ids[j])
         };
         let id = same.unwrap_or_else(|| {

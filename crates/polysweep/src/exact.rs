@@ -218,36 +218,48 @@ impl Line {
     }
 }
 
-const INPUT: u32 = u32::MAX;
-
 /// A point of the sweep: an input vertex, or the exact crossing of two input segments' lines.
+///
+/// Packed to 20 bytes (alignment 4): an event holds two points, and this keeps an event to one 64-byte cache line
+/// (see [`crate::events::SweepEvent`]). Its fields are read by value, never by reference.
 #[derive(Clone, Copy, Debug)]
+#[repr(C, packed(4))]
 pub(crate) struct SweepPoint {
     /// The coordinates, exact for input vertices, correctly rounded for crossings.
     pub approx: [f64; 2],
-    /// Index of the exact coordinates in [`Exact::crossings`], or `INPUT`.
-    crossing: u32,
-    /// Which coordinates of a crossing are exactly their approximation (e.g. x on a vertical input edge), so that
-    /// comparisons of them need no exact arithmetic.
-    representable: [bool; 2],
+    /// The index of the exact coordinates in [`Exact::crossings`] (`INPUT` for an input vertex) in the low bits,
+    /// and a bit per axis (`EXACT_X`, `EXACT_Y`) telling whether that coordinate is exactly its approximation
+    /// (always for an input vertex; for a crossing, e.g. x on a vertical input edge), so that comparisons of it
+    /// need no exact arithmetic.
+    tag: u32,
 }
+
+const EXACT_X: u32 = 1 << 30;
+const EXACT_Y: u32 = 1 << 31;
+/// The index bits of [`SweepPoint::tag`], and the index of every input vertex. Crossings are fewer: each one makes
+/// four events at least, and events are numbered by `u32`.
+const INPUT: u32 = EXACT_X - 1;
 
 impl SweepPoint {
     pub fn input(p: [f64; 2]) -> Self {
         SweepPoint {
             approx: p,
-            crossing: INPUT,
-            representable: [true; 2],
+            tag: INPUT | EXACT_X | EXACT_Y,
         }
     }
 
     pub fn is_input(&self) -> bool {
-        self.crossing == INPUT
+        self.crossing() == INPUT
     }
 
     /// Is the coordinate on `axis` exactly `approx[axis]`?
     pub fn is_exact(&self, axis: usize) -> bool {
-        self.representable[axis]
+        self.tag & (EXACT_X << axis) != 0
+    }
+
+    /// The index of this point's exact coordinates among the crossings, or `INPUT`.
+    fn crossing(&self) -> u32 {
+        self.tag & INPUT
     }
 }
 
@@ -294,7 +306,7 @@ pub(crate) struct Exact {
 impl Exact {
     /// One coordinate of `p` as a fraction with a positive denominator.
     fn fraction(&self, p: &SweepPoint, axis: usize) -> (Dyadic, Dyadic) {
-        if p.representable[axis] {
+        if p.is_exact(axis) {
             (Dyadic::from_f64(p.approx[axis]), Dyadic::one())
         } else {
             let c = self.exact_crossing(p);
@@ -307,13 +319,13 @@ impl Exact {
 
     /// The exact coordinates of crossing `p`, made on first use.
     fn exact_crossing(&self, p: &SweepPoint) -> &Fraction {
-        let c = &self.crossings[p.crossing as usize];
+        let c = &self.crossings[p.crossing() as usize];
         c.exact
             .get_or_init(|| Fraction::crossing(&c.lines[0], &c.lines[1]))
     }
 
     fn error(p: &SweepPoint, axis: usize) -> f64 {
-        if p.representable[axis] {
+        if p.is_exact(axis) {
             0.0
         } else {
             rounding_error(p.approx[axis])
@@ -330,7 +342,7 @@ impl Exact {
     #[inline]
     pub fn cmp_coordinate(&self, p: &SweepPoint, q: &SweepPoint, axis: usize) -> Ordering {
         let (u, v) = (p.approx[axis], q.approx[axis]);
-        if u != v || (p.representable[axis] && q.representable[axis]) {
+        if u != v || (p.is_exact(axis) && q.is_exact(axis)) {
             return u.partial_cmp(&v).unwrap_or(Ordering::Equal); // -0 equals 0
         }
         self.cmp_coordinate_of_crossing(p, q, axis)
@@ -340,7 +352,7 @@ impl Exact {
     /// crossing's rounded coordinate.
     #[inline(never)]
     fn cmp_coordinate_of_crossing(&self, p: &SweepPoint, q: &SweepPoint, axis: usize) -> Ordering {
-        if p.crossing == q.crossing {
+        if p.crossing() == q.crossing() {
             return Ordering::Equal; // the events of one crossing (`INPUT` points are representable)
         }
         let ((pn, pd), (qn, qd)) = (self.fraction(p, axis), self.fraction(q, axis));
@@ -390,7 +402,7 @@ impl Exact {
 
     #[inline(never)]
     fn orient_crossing(&self, line: &Line, p: &SweepPoint) -> Ordering {
-        let c = &self.crossings[p.crossing as usize];
+        let c = &self.crossings[p.crossing() as usize];
         if c.lines.contains(line) {
             // The commonest question about a crossing, and one no filter can answer: it is exactly zero.
             return Ordering::Equal;
@@ -457,10 +469,19 @@ impl Exact {
             lines: [*l, *m],
             exact,
         });
+        let index = (self.crossings.len() - 1) as u32;
+        assert!(index < INPUT, "more crossings than events can name");
+        let exact_bits =
+            [EXACT_X, EXACT_Y]
+                .iter()
+                .zip(representable)
+                .fold(
+                    0,
+                    |bits, (&bit, exact)| if exact { bits | bit } else { bits },
+                );
         SweepPoint {
             approx,
-            crossing: (self.crossings.len() - 1) as u32,
-            representable,
+            tag: index | exact_bits,
         }
     }
 
@@ -495,7 +516,46 @@ mod tests {
             Ordering::Equal,
             "1/3 is not a float"
         );
-        assert_eq!(x.approx, [1.0 / 3.0, 1.0 / 3.0]);
+        assert_eq!({ x.approx }, [1.0 / 3.0, 1.0 / 3.0]);
+    }
+
+    #[test]
+    fn a_point_knows_its_crossing_and_which_coordinates_are_exact() {
+        assert_eq!(std::mem::size_of::<SweepPoint>(), 20);
+        let input = SweepPoint::input([0.25, -3.0]);
+        assert!(input.is_input() && input.is_exact(0) && input.is_exact(1));
+        let mut exact = Exact::default();
+        let diagonal = Line {
+            a: [0.0, 0.0],
+            b: [3.0, 1.0],
+        };
+        let lines = [
+            // (1/2, 1/6): x exact, y rounded.
+            Line {
+                a: [0.5, -1.0],
+                b: [0.5, 1.0],
+            },
+            // (3/7, 1/7): both rounded.
+            Line {
+                a: [0.0, 1.0],
+                b: [1.0, -1.0],
+            },
+            // (3/2, 1/2): both exact.
+            Line {
+                a: [0.0, 0.5],
+                b: [2.0, 0.5],
+            },
+        ];
+        for (index, (line, exact_axes)) in lines
+            .iter()
+            .zip([[true, false], [false, false], [true, true]])
+            .enumerate()
+        {
+            let p = exact.crossing(&diagonal, line);
+            assert!(!p.is_input());
+            assert_eq!(p.crossing(), index as u32);
+            assert_eq!([p.is_exact(0), p.is_exact(1)], exact_axes, "crossing {index}");
+        }
     }
 
     #[test]
@@ -801,7 +861,7 @@ mod tests {
                 (p.approx[0] - f[0]).abs() < 2f64.powi(-30)
                     && (p.approx[1] - f[1]).abs() < 2f64.powi(-30),
                 "{:?} vs {:?}",
-                p.approx,
+                { p.approx },
                 f
             );
             assert_eq!(exact.orient(&l, &p), Ordering::Equal);
