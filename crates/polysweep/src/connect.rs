@@ -177,7 +177,7 @@ pub(crate) fn clearance(magnitude: f64) -> f64 {
 /// there, so it has a vertex in the cluster as well; far from any cluster, rounding moves nothing across anything.
 pub(crate) fn rounding_may_matter(vertices: &[SweepPoint]) -> bool {
     // Sweep order is x order and rounding is monotone, so the vertices within a few ulps of a point in x are a
-    // range of the sweep order, found by halving. A short range is scanned. In a long one (a grid's column of
+    // range of the sweep order, found by galloping. A short range is scanned. In a long one (a grid's column of
     // thousands of vertices at one x), vertices of one x come in y order (the sweep's), in runs found once over
     // the whole order, and each run is searched by halving too.
     let coordinate = |j: usize, axis: usize| vertices[j].approx[axis];
@@ -188,8 +188,7 @@ pub(crate) fn rounding_may_matter(vertices: &[SweepPoint]) -> bool {
         .any(|i| {
             let [x, y] = vertices[i].approx;
             let (dx, dy) = (ulp(x), ulp(y));
-            let start = vertices.partition_point(|v| v.approx[0] < x - dx);
-            let end = vertices.partition_point(|v| v.approx[0] <= x + dx);
+            let (start, end) = within_in_x(vertices, i, dx);
             let near_in_y = |j: usize| j != i && (coordinate(j, 1) - y).abs() <= dy;
             if end - start <= LONG_RANGE {
                 return (start..end).any(near_in_y);
@@ -216,6 +215,26 @@ pub(crate) fn rounding_may_matter(vertices: &[SweepPoint]) -> bool {
                     (below..above).any(near_in_y)
                 })
         })
+}
+
+/// The range of `vertices` (in sweep order, so by x) whose x lies within `dx` of vertex `i`'s. It holds `i`; it is
+/// found by galloping out from `i` and halving the last step, so that its cost grows with the range, not with the
+/// whole order: most crossings' x is theirs alone, and one step each way tells.
+fn within_in_x(vertices: &[SweepPoint], i: usize, dx: f64) -> (usize, usize) {
+    let x = vertices[i].approx[0];
+    let mut step = 1;
+    while step <= i && vertices[i - step].approx[0] >= x - dx {
+        step *= 2;
+    }
+    let low = i.saturating_sub(step);
+    let start = low + vertices[low..i].partition_point(|v| v.approx[0] < x - dx);
+    step = 1;
+    while i + step < vertices.len() && vertices[i + step].approx[0] <= x + dx {
+        step *= 2;
+    }
+    let high = (i + step).min(vertices.len());
+    let end = i + 1 + vertices[i + 1..high].partition_point(|v| v.approx[0] <= x + dx);
+    (start, end)
 }
 
 /// Ranges of vertices longer than this are searched run by run rather than scanned (see `rounding_may_matter`).
@@ -485,6 +504,36 @@ mod tests {
             assert_eq!(ids[a], ids[b]);
         }
         assert_eq!(points.len(), vertices.len() - 2);
+    }
+
+    #[test]
+    fn galloping_finds_the_range_within_dx_that_halving_the_whole_order_finds() {
+        let mut random = crate::test_random::unit(0x9e37_79b9_7f4a_7c15);
+        for trial in 0..200 {
+            // Runs of one x (a grid's columns), lone x, and x a few ulps apart, at both ends too.
+            let mut xs: Vec<f64> = (0..1 + (random() * 300.0) as usize)
+                .map(|_| match (random() * 3.0) as u32 {
+                    0 => (random() * 4.0).floor(),
+                    1 => f64::from_bits(2.0f64.to_bits() + (random() * 8.0) as u64),
+                    _ => random() * 4.0,
+                })
+                .collect();
+            xs.sort_by(f64::total_cmp);
+            let vertices: Vec<SweepPoint> =
+                xs.iter().map(|&x| SweepPoint::input([x, 0.0])).collect();
+            for i in 0..vertices.len() {
+                let dx = [0.0, clearance(xs[i]), random() * 0.5][trial % 3];
+                let halving = (
+                    xs.partition_point(|&u| u < xs[i] - dx),
+                    xs.partition_point(|&u| u <= xs[i] + dx),
+                );
+                assert_eq!(
+                    within_in_x(&vertices, i, dx),
+                    halving,
+                    "trial {trial}, vertex {i}"
+                );
+            }
+        }
     }
 
     #[test]

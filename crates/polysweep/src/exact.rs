@@ -554,7 +554,11 @@ mod tests {
             let p = exact.crossing(&diagonal, line);
             assert!(!p.is_input());
             assert_eq!(p.crossing(), index as u32);
-            assert_eq!([p.is_exact(0), p.is_exact(1)], exact_axes, "crossing {index}");
+            assert_eq!(
+                [p.is_exact(0), p.is_exact(1)],
+                exact_axes,
+                "crossing {index}"
+            );
         }
     }
 
