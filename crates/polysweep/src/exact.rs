@@ -343,7 +343,13 @@ impl Exact {
     pub fn cmp_coordinate(&self, p: &SweepPoint, q: &SweepPoint, axis: usize) -> Ordering {
         let (u, v) = (p.approx[axis], q.approx[axis]);
         if u != v || (p.is_exact(axis) && q.is_exact(axis)) {
-            return u.partial_cmp(&v).unwrap_or(Ordering::Equal); // -0 equals 0
+            // Worked out as a value rather than by branches, which the callers' own tests of it would follow and
+            // no predictor can guess. -0 equals 0.
+            return match i8::from(u > v) - i8::from(u < v) {
+                -1 => Ordering::Less,
+                0 => Ordering::Equal,
+                _ => Ordering::Greater,
+            };
         }
         self.cmp_coordinate_of_crossing(p, q, axis)
     }
@@ -384,10 +390,14 @@ impl Exact {
         let (left, right) = ((ax - px) * (by - py), (ay - py) * (bx - px));
         let bound = ORIENT_FILTER * (left.abs() + right.abs());
         let det = left - right;
-        if det > bound {
-            Ordering::Greater
-        } else if det < -bound {
-            Ordering::Less
+        // One test whether the filter decides (it almost always does), and the sign as a value rather than a second
+        // branch: which side a point lies is what a search of S asks at every level, and no predictor can guess it.
+        if det.abs() > bound {
+            if det > 0.0 {
+                Ordering::Greater
+            } else {
+                Ordering::Less
+            }
         } else {
             Self::orient_adaptive(line, p.approx)
         }
@@ -588,6 +598,17 @@ mod tests {
             }
         }
         assert!(crossings.len() > 50);
+        // Input coordinates compare as numbers: -0 equals 0.
+        for (u, v, order) in [
+            (-0.0, 0.0, Ordering::Equal),
+            (-1.0, 0.0, Ordering::Less),
+            (2.0, -0.0, Ordering::Greater),
+            (f64::MIN_POSITIVE, 0.0, Ordering::Greater),
+        ] {
+            let (p, q) = (SweepPoint::input([u, v]), SweepPoint::input([v, u]));
+            assert_eq!(exact.cmp_coordinate(&p, &q, 0), order, "{u} against {v}");
+            assert_eq!(exact.cmp_coordinate(&p, &q, 1), order.reverse());
+        }
         let exactly = |exact: &Exact, p: &SweepPoint, q: &SweepPoint, axis: usize| {
             let ((pn, pd), (qn, qd)) = (exact.fraction(p, axis), exact.fraction(q, axis));
             (&(&pn * &qd) - &(&qn * &pd)).sign()

@@ -203,11 +203,12 @@ impl<'a> Sweep<'a> {
     #[inline]
     fn is_below(&self, e: EventId, old: &InStatus) -> bool {
         let new = self.event(e);
-        let side = match self.exact.orient(&old.line, &new.point) {
-            Ordering::Equal => self.exact.orient(&old.line, &self.other_point(e)),
-            side => side,
-        };
-        match side {
+        let side = self.exact.orient(&old.line, &new.point);
+        // The side as a value, not a branch: a search of S asks this at every level, and no predictor can guess it.
+        if side != Ordering::Equal {
+            return side == Ordering::Less;
+        }
+        match self.exact.orient(&old.line, &self.other_point(e)) {
             Ordering::Less => true,
             Ordering::Greater => false,
             Ordering::Equal => {
