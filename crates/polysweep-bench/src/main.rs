@@ -30,8 +30,9 @@ const REFERENCE: [(usize, f64); 4] = [
     (3895, 13307.146280),
 ];
 /// Timed runs per engine and workload; `BENCH_RUNS` overrides it (more runs steady the minimum for A/B comparisons
-/// on a noisy machine).
-const RUNS: usize = 11;
+/// on a noisy machine). 21: on this shared 2-core machine, medians of 11 moved by up to 10% between runs of the same
+/// code; the native benchmark takes about a minute and a half with 21.
+const RUNS: usize = 21;
 
 /// Clipper2 works on integers: coordinates scaled by 10^8, its finest documented precision.
 #[derive(Debug, Default, Clone, Copy, PartialEq, Hash)]
