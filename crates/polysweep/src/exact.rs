@@ -398,6 +398,10 @@ impl Exact {
             } else {
                 Ordering::Less
             }
+        } else if (ax == px || by == py) && (ay == py || bx == px) {
+            // Both products have a factor that is exactly 0: `p` is exactly on the line (a grid's lines, edges
+            // meeting at a vertex), the filter's commonest failure, decided without the adaptive predicate.
+            Ordering::Equal
         } else {
             Self::orient_adaptive(line, p.approx)
         }
@@ -838,6 +842,40 @@ mod tests {
             exact.orient(&line, &SweepPoint::input([24.0, 24.0])),
             Ordering::Equal
         );
+    }
+
+    #[test]
+    fn orientation_agrees_with_the_adaptive_predicate_on_and_next_to_lines() {
+        // Points on axis-parallel lines, at lines' endpoints, on their extensions, and one float off each: the
+        // shortcut for points exactly on a line must answer as the adaptive predicate does, and only for them.
+        let exact = Exact::default();
+        let lines = [
+            ([0.25, 3.0], [7.5, 3.0]),
+            ([-2.0, -1.0], [-2.0, 6.0]),
+            ([0.1, 0.2], [0.7, 1.9]),
+            ([1e-50, -3e40], [5e30, -3e40]),
+        ];
+        let mut on_a_line = 0;
+        for (a, b) in lines {
+            let line = Line { a, b };
+            // Far along the line, rounded: nearly on it, where the float filter cannot decide.
+            let far = [a[0] + 40.0 * (b[0] - a[0]), a[1] + 40.0 * (b[1] - a[1])];
+            for base in [a, b, [a[0], b[1]], [b[0], a[1]], [a[0] * 3.0, a[1]], far] {
+                for dx in [f64::next_down, |v: f64| v, f64::next_up] {
+                    for dy in [f64::next_down, |v: f64| v, f64::next_up] {
+                        let p = [dx(base[0]), dy(base[1])];
+                        let side = exact.orient(&line, &SweepPoint::input(p));
+                        assert_eq!(
+                            side,
+                            Exact::orient_adaptive(&line, p),
+                            "{p:?} against {line:?}"
+                        );
+                        on_a_line += usize::from(side == Ordering::Equal);
+                    }
+                }
+            }
+        }
+        assert!(on_a_line > 10);
     }
 
     #[test]
