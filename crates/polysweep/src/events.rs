@@ -284,6 +284,13 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
     events
 }
 
+/// The next event of Q: the next initial one or the top of the heap.
+#[derive(Clone, Copy)]
+pub(crate) struct Head {
+    pub event: EventId,
+    from_heap: bool,
+}
+
 /// The event-point set Q of Fig. 5: the initial events, already in order (see [`initial_events`]), and a binary
 /// heap for the events that subdivision adds. Popping takes the smaller head; the order is the same as one priority
 /// queue's.
@@ -316,28 +323,33 @@ impl EventQueue {
         }
     }
 
-    /// The next event, and whether it is at the top of the heap rather than the next initial one.
-    fn head(&self, order: impl Fn(EventId, EventId) -> Ordering) -> Option<(EventId, bool)> {
+    /// The next event, without taking it (see [`Self::take`]).
+    pub fn peek(&self, order: impl Fn(EventId, EventId) -> Ordering) -> Option<Head> {
         let initial = Some(self.next_initial).filter(|&i| i < self.initial);
+        let head = |event, from_heap| Some(Head { event, from_heap });
         match (initial, self.heap.first()) {
             (None, None) => None,
-            (Some(i), None) => Some((i, false)),
-            (None, Some(&h)) => Some((h, true)),
-            (Some(i), Some(&h)) if order(h, i) == Ordering::Less => Some((h, true)),
-            (Some(i), Some(_)) => Some((i, false)),
+            (Some(i), None) => head(i, false),
+            (None, Some(&h)) => head(h, true),
+            (Some(i), Some(&h)) if order(h, i) == Ordering::Less => head(h, true),
+            (Some(i), Some(_)) => head(i, false),
         }
-    }
-
-    pub fn peek(&self, order: impl Fn(EventId, EventId) -> Ordering) -> Option<EventId> {
-        self.head(order).map(|(event, _)| event)
     }
 
     #[inline(always)]
     pub fn pop(&mut self, order: impl Fn(EventId, EventId) -> Ordering) -> Option<EventId> {
-        let (next, from_heap) = self.head(&order)?;
-        if !from_heap {
+        let head = self.peek(&order)?;
+        self.take(head, order);
+        Some(head.event)
+    }
+
+    /// Takes out `head`, which [`Self::peek`] has just given (nothing pushed since): the two heads are not
+    /// compared again.
+    #[inline(always)]
+    pub fn take(&mut self, head: Head, order: impl Fn(EventId, EventId) -> Ordering) {
+        if !head.from_heap {
             self.next_initial += 1;
-            return Some(next);
+            return;
         }
         let top = self.heap.swap_remove(0);
         let mut parent = 0;
@@ -357,7 +369,7 @@ impl EventQueue {
             self.heap.swap(parent, smallest);
             parent = smallest;
         }
-        Some(top)
+        debug_assert_eq!(top, head.event, "the head taken is the one peeked");
     }
 }
 

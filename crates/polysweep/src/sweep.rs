@@ -415,9 +415,10 @@ impl<'a> Sweep<'a> {
     /// removal, no search from the root, and no possibleInter between neighbours that would not stay neighbours.
     /// The result is the same as removing and inserting; at most vertices of a coastline, this is what happens.
     fn successor_in_place(&mut self, node: u32) -> Option<EventId> {
-        let next = self
+        let head = self
             .queue
             .peek(|a, b| event_order(&self.events, self.edges, &self.exact, a, b))?;
+        let next = head.event;
         let event = self.event(next);
         if !event.left() || self.exact.cmp_points(&event.point, &self.current) != Ordering::Equal {
             return None;
@@ -428,8 +429,9 @@ impl<'a> Sweep<'a> {
             return None;
         }
         // At the current point, so at the current output vertex.
-        self.queue
-            .pop(|a, b| event_order(&self.events, self.edges, &self.exact, a, b));
+        self.queue.take(head, |a, b| {
+            event_order(&self.events, self.edges, &self.exact, a, b)
+        });
         Some(next)
     }
 
