@@ -3,7 +3,7 @@
 use crate::error::{Error, Location};
 use crate::events::{InputEdge, Operand};
 use crate::exact::Line;
-use crate::geometry::{larger, open_len, smaller, MultiPolygon, Point};
+use crate::geometry::{larger, open_len, smaller, MultiPolygon, Point, Polygon};
 
 /// Largest coordinate magnitude accepted: 2^200. Within it (and above [`MIN_COORDINATE`]) the products formed by
 /// the exact predicates neither overflow nor underflow, which their proofs assume.
@@ -12,34 +12,60 @@ pub const MAX_COORDINATE: f64 = (1u128 << 100) as f64 * (1u128 << 100) as f64;
 pub const MIN_COORDINATE: f64 = 1.0 / MAX_COORDINATE;
 
 /// Checks every coordinate of `operand` (its index among the operation's operands is `index`), and returns the box
-/// of each of its polygons (of all its rings: a hole may reach outside its shell), made on the same pass.
+/// of each of its polygons (of all its rings: a hole may reach outside its shell), made on the same pass. The pass
+/// only notes whether a polygon has a bad coordinate, without a branch per coordinate; such a polygon is read again
+/// to name the first one.
 pub(crate) fn check(index: usize, operand: &MultiPolygon) -> Result<Vec<Bounds>, Error> {
     let mut boxes = Vec::with_capacity(operand.0.len());
     for (polygon, p) in operand.0.iter().enumerate() {
         let mut bounds = Bounds::EMPTY;
-        for (ring, r) in p.rings().enumerate() {
-            for (vertex, point) in r.iter().enumerate() {
-                let at = Location {
-                    operand: index,
-                    polygon,
-                    ring,
-                    vertex,
-                };
-                for value in [point.x, point.y] {
-                    if !value.is_finite() {
-                        return Err(Error::NonFiniteCoordinate { at, value });
-                    }
-                    let magnitude = value.abs();
-                    if magnitude != 0.0 && !(MIN_COORDINATE..=MAX_COORDINATE).contains(&magnitude) {
-                        return Err(Error::CoordinateOutOfRange { at, value });
-                    }
-                }
+        let mut accepted = true;
+        for ring in p.rings() {
+            for point in ring {
+                accepted &= is_accepted(point.x) & is_accepted(point.y);
                 bounds = bounds.around(&Bounds::at(point));
             }
+        }
+        if let Some(error) = (!accepted)
+            .then(|| first_rejected(index, polygon, p))
+            .flatten()
+        {
+            return Err(error);
         }
         boxes.push(bounds);
     }
     Ok(boxes)
+}
+
+/// Is `value` a coordinate the exact predicates' proofs cover: finite, and 0 or of a magnitude within
+/// [`MIN_COORDINATE`]..=[`MAX_COORDINATE`]?
+fn is_accepted(value: f64) -> bool {
+    let magnitude = value.abs();
+    magnitude == 0.0 || (MIN_COORDINATE..=MAX_COORDINATE).contains(&magnitude)
+}
+
+/// The error for the first coordinate of polygon `p` (number `polygon` of operand `index`) that [`is_accepted`]
+/// rejects, if any.
+fn first_rejected(index: usize, polygon: usize, p: &Polygon) -> Option<Error> {
+    let (ring, vertex, value) = (p.rings().enumerate())
+        .flat_map(|(ring, r)| {
+            r.iter()
+                .enumerate()
+                .map(move |(vertex, point)| (ring, vertex, point))
+        })
+        .flat_map(|(ring, vertex, point)| [point.x, point.y].map(|value| (ring, vertex, value)))
+        .find(|&(_, _, value)| !is_accepted(value))?;
+    let at = Location {
+        operand: index,
+        polygon,
+        ring,
+        vertex,
+    };
+    Some(if value.is_finite() {
+        Error::CoordinateOutOfRange { at, value }
+    } else {
+        Error::NonFiniteCoordinate { at, value }
+    })
 }
 
 /// An axis-aligned box, closed; the empty box has min > max.
@@ -133,6 +159,82 @@ pub(crate) fn add_edges(
                 // Crossing an edge upwards enters a counter-clockwise ring when the edge runs left to right.
                 winding: if forward { 1 } else { -1 },
             });
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn operand(rings: &[&[[f64; 2]]]) -> MultiPolygon {
+        let polygon: Vec<Vec<[f64; 2]>> = rings.iter().map(|r| r.to_vec()).collect();
+        let square = vec![vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]];
+        MultiPolygon::from_coordinates(&[square, polygon])
+    }
+
+    #[test]
+    fn the_first_rejected_coordinate_is_named_and_boxes_cover_every_ring() {
+        let shell: &[[f64; 2]] = &[[-0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0]];
+        let hole: &[[f64; 2]] = &[[1.0, 1.0], [9.0, -2.0], [1.0, 2.0]];
+        let boxes = check(3, &operand(&[shell, hole])).unwrap();
+        assert_eq!(
+            boxes[1],
+            Bounds {
+                min: [-0.0, -2.0],
+                max: [9.0, 3.0]
+            }
+        );
+        let tiny = MIN_COORDINATE / 2.0;
+        for (bad_hole, vertex, value, finite) in [
+            (
+                &[[1.0, 1.0], [2.0, 1.0], [f64::NAN, 2.0]][..],
+                2,
+                f64::NAN,
+                false,
+            ),
+            (
+                &[[1.0, 1.0], [2.0, f64::INFINITY], [1e300, 2.0]][..],
+                1,
+                f64::INFINITY,
+                false,
+            ),
+            (
+                &[[1.0, 1.0], [2.0, tiny], [1.0, f64::NAN]][..],
+                1,
+                tiny,
+                true,
+            ),
+            (
+                &[[-1e300, 1.0], [2.0, 1.0], [1.0, 2.0]][..],
+                0,
+                -1e300,
+                true,
+            ),
+        ] {
+            let error = check(3, &operand(&[shell, bad_hole])).unwrap_err();
+            let at = Location {
+                operand: 3,
+                polygon: 1,
+                ring: 1,
+                vertex,
+            };
+            match error {
+                Error::NonFiniteCoordinate {
+                    at: found,
+                    value: v,
+                } if !finite => {
+                    assert_eq!((found, v.is_nan()), (at, value.is_nan()));
+                    assert!(v.is_nan() || v == value);
+                }
+                Error::CoordinateOutOfRange {
+                    at: found,
+                    value: v,
+                } if finite => {
+                    assert_eq!((found, v), (at, value));
+                }
+                other => panic!("{bad_hole:?}: {other:?}"),
+            }
         }
     }
 }
