@@ -83,17 +83,19 @@ fn squares(n: usize) -> Coordinates {
 
 /// Timed runs of each engine: a warm-up each (which gives the result area), then the runs in rounds, one of every
 /// engine per round, so that a change in the machine's speed over the seconds of a workload falls on all engines
-/// alike. Returns each engine's times, sorted, and area.
+/// alike. Each round starts one engine further on, so that no engine always runs after the same one (and finds the
+/// caches and the allocator as that one left them). Returns each engine's times, sorted, and area.
 fn timed_rounds(engines: &mut [&mut dyn FnMut() -> f64]) -> Vec<(Vec<f64>, f64)> {
     let areas: Vec<f64> = engines.iter_mut().map(|run| run()).collect();
     let runs = std::env::var("BENCH_RUNS")
         .map_or(RUNS, |r| r.parse().expect("BENCH_RUNS: a number of runs"));
     let mut times = vec![Vec::with_capacity(runs); engines.len()];
-    for _ in 0..runs.max(1) {
-        for (run, times) in engines.iter_mut().zip(&mut times) {
+    for round in 0..runs.max(1) {
+        for turn in 0..engines.len() {
+            let engine = (round + turn) % engines.len();
             let start = Instant::now();
-            std::hint::black_box(run());
-            times.push(start.elapsed().as_secs_f64() * 1e3);
+            std::hint::black_box(engines[engine]());
+            times[engine].push(start.elapsed().as_secs_f64() * 1e3);
         }
     }
     for t in &mut times {
