@@ -8,8 +8,26 @@ use crate::geometry::{larger, open_len, smaller, MultiPolygon, Point, Polygon};
 /// Largest coordinate magnitude accepted: 2^200. Within it (and above [`MIN_COORDINATE`]) the products formed by
 /// the exact predicates neither overflow nor underflow, which their proofs assume.
 pub const MAX_COORDINATE: f64 = (1u128 << 100) as f64 * (1u128 << 100) as f64;
-/// Smallest non-zero coordinate magnitude accepted: 2^-200.
+/// Smallest non-zero coordinate magnitude accepted: 2^-200. A result is always accepted input again: its
+/// coordinates go through [`nearest_accepted`].
 pub const MIN_COORDINATE: f64 = 1.0 / MAX_COORDINATE;
+
+/// The accepted coordinate nearest to `value`, a finite coordinate of a result: `value` itself, or where its
+/// magnitude is below [`MIN_COORDINATE`], 0 or ±`MIN_COORDINATE`, whichever is nearer (0 on a tie). Crossings of
+/// accepted edges can lie arbitrarily close to an axis; snapping them so keeps every result valid input for a
+/// next operation (and for the repair sweeps, which read the rounded result as input). It is monotone like
+/// rounding, and moves a coordinate by at most half of `MIN_COORDINATE`, which the rounding checks allow for (see
+/// [`crate::connect::clearance`]).
+pub(crate) fn nearest_accepted(value: f64) -> f64 {
+    let magnitude = value.abs();
+    if magnitude >= MIN_COORDINATE {
+        value
+    } else if magnitude > MIN_COORDINATE / 2.0 {
+        MIN_COORDINATE.copysign(value)
+    } else {
+        0.0
+    }
+}
 
 /// Checks every coordinate of `operand` (its index among the operation's operands is `index`), and returns the box
 /// of each of its polygons (of all its rings: a hole may reach outside its shell), made on the same pass. The pass
