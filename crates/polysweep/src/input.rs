@@ -94,11 +94,6 @@ pub(crate) struct Bounds {
 }
 
 impl Bounds {
-    pub const EVERYWHERE: Bounds = Bounds {
-        min: [f64::NEG_INFINITY; 2],
-        max: [f64::INFINITY; 2],
-    };
-
     pub const EMPTY: Bounds = Bounds {
         min: [f64::INFINITY; 2],
         max: [f64::NEG_INFINITY; 2],
@@ -149,6 +144,98 @@ impl Bounds {
     }
 }
 
+/// Which cells of a grid some box of a set touches: tells in constant time whether another box may meet a box of
+/// the set. Its "no" is exact, so a polygon it rules out can be left out of the sweep (see `overlay_with_stats`);
+/// its "yes" may be wrong by a cell.
+///
+/// A coordinate's cell is its place between the set's smallest and largest, scaled to the number of cells and
+/// rounded down (clamped at the ends): monotone in floating point, so two boxes with a common point both touch that
+/// point's cell. The cells touched are counted with a difference table, one update per box whatever its size, and
+/// then summed into a table of rectangle sums, so that the cost is linear in the boxes and cells.
+pub(crate) struct Coverage {
+    region: Bounds,
+    cells: usize,
+    scale: [f64; 2],
+    /// `touched[r · (cells + 1) + c]`: how many cells of rows below `r` and columns left of `c` some box touches.
+    touched: Vec<u32>,
+}
+
+impl Coverage {
+    /// The coverage of `boxes` on a grid of `cells` × `cells`.
+    pub fn new(boxes: &[Bounds], cells: usize) -> Self {
+        let region = Bounds::around_all(boxes);
+        let scale = [0, 1].map(|k| {
+            let extent = region.max[k] - region.min[k];
+            if extent > 0.0 {
+                cells as f64 / extent
+            } else {
+                0.0
+            }
+        });
+        let mut coverage = Coverage {
+            region,
+            cells,
+            scale,
+            touched: vec![0; (cells + 1) * (cells + 1)],
+        };
+        // How many boxes cover each cell, by a difference table: +1 at a box's first cell, -1 past its last.
+        let width = cells + 1;
+        let mut count = vec![0i32; width * width];
+        for b in boxes.iter().filter(|b| b.meets(&region)) {
+            let [[c0, c1], [r0, r1]] = coverage.range(b);
+            count[r0 * width + c0] += 1;
+            count[r0 * width + c1 + 1] -= 1;
+            count[(r1 + 1) * width + c0] -= 1;
+            count[(r1 + 1) * width + c1 + 1] += 1;
+        }
+        // Summed along rows and then along columns, the differences give each cell's count; the cells with any
+        // are summed again into the rectangle sums, shifted by one row and one column.
+        for row in count.chunks_exact_mut(width).take(cells) {
+            let mut sum = 0;
+            for v in &mut row[..cells] {
+                sum += *v;
+                *v = sum;
+            }
+        }
+        for r in 1..cells {
+            let (above, row) = count.split_at_mut(r * width);
+            for (v, a) in row[..cells].iter_mut().zip(&above[(r - 1) * width..]) {
+                *v += a;
+            }
+        }
+        for (r, row) in count.chunks_exact(width).take(cells).enumerate() {
+            let (below, this) = coverage.touched.split_at_mut((r + 1) * width);
+            let below = &below[r * width..];
+            let mut in_row = 0;
+            for c in 0..cells {
+                in_row += u32::from(row[c] > 0);
+                this[c + 1] = below[c + 1] + in_row;
+            }
+        }
+        coverage
+    }
+
+    /// The first and last column and row that box `b` touches.
+    fn range(&self, b: &Bounds) -> [[usize; 2]; 2] {
+        // (Rounding down a negative or NaN place gives 0.)
+        let cell = |v: f64, k: usize| {
+            (((v - self.region.min[k]) * self.scale[k]) as usize).min(self.cells - 1)
+        };
+        [0, 1].map(|k| [cell(b.min[k], k), cell(b.max[k], k)])
+    }
+
+    /// Could `b` meet one of the boxes? `false` only if it meets none.
+    pub fn may_meet(&self, b: &Bounds) -> bool {
+        if !b.meets(&self.region) {
+            return false;
+        }
+        let [[c0, c1], [r0, r1]] = self.range(b);
+        let (t, width) = (&self.touched, self.cells + 1);
+        t[(r1 + 1) * width + c1 + 1] + t[r0 * width + c0]
+            > t[r0 * width + c1 + 1] + t[(r1 + 1) * width + c0]
+    }
+}
+
 /// Appends the edges of every ring of the polygons of `polygons` that `keep` (given a polygon's index) keeps.
 /// Edges of zero length are skipped; a ring with fewer than three vertices still gives its edges, which cancel each
 /// other (§7.2).
@@ -184,6 +271,49 @@ pub(crate) fn add_edges(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_random::unit;
+
+    #[test]
+    fn coverage_never_rules_out_a_box_that_meets_one() {
+        let mut random = unit(29);
+        // Boxes on a coarse lattice, so that many touch at an edge or a corner, some are points or segments.
+        let mut lattice = || (random() * 40.0).floor() / 2.0 - 5.0;
+        let mut random_box = || {
+            let (x, y) = (lattice(), lattice());
+            let (w, h) = ((lattice() + 5.0) / 8.0, (lattice() + 5.0) / 8.0);
+            Bounds {
+                min: [x, y],
+                max: [x + w, y + h],
+            }
+        };
+        let (mut ruled_out, mut apart) = (0, 0);
+        for (set_size, cells) in [
+            (0, 1),
+            (1, 1),
+            (1, 7),
+            (30, 1),
+            (30, 5),
+            (30, 16),
+            (200, 15),
+        ] {
+            let boxes: Vec<Bounds> = (0..set_size).map(|_| random_box()).collect();
+            let coverage = Coverage::new(&boxes, cells);
+            for _ in 0..400 {
+                let b = random_box();
+                let meets = boxes.iter().any(|c| c.meets(&b));
+                let may_meet = coverage.may_meet(&b);
+                assert!(may_meet || !meets, "{b:?} meets one of {boxes:?}");
+                // Those within the set's box, which the cells have to tell apart.
+                if !meets && b.meets(&coverage.region) {
+                    apart += 1;
+                    ruled_out += usize::from(!may_meet);
+                }
+            }
+        }
+        // Not a filter that always says yes: a fair share (here 227 of 814) of the boxes between the set's are ruled
+        // out.
+        assert!(ruled_out * 5 > apart, "{ruled_out} of {apart}");
+    }
 
     fn operand(rings: &[&[[f64; 2]]]) -> MultiPolygon {
         let polygon: Vec<Vec<[f64; 2]>> = rings.iter().map(|r| r.to_vec()).collect();

@@ -101,7 +101,7 @@ pub struct Options {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Stats {
     /// Edges swept: those of all operands, less zero-length ones and, for an intersection or a difference, those of
-    /// polygons outside the box where the result can lie.
+    /// polygons whose box meets no polygon's box of the other operand.
     pub input_edges: usize,
     /// Points where two edges properly cross (constructed intersection points).
     pub crossings: usize,
@@ -130,27 +130,44 @@ pub fn overlay_with_stats(
     options: &Options,
 ) -> Result<(MultiPolygon, Stats), Error> {
     let (subject_boxes, clipping_boxes) = (input::check(0, subject)?, input::check(1, clipping)?);
-    // An intersection lies within both operands' boxes and a difference within the subject's: polygons outside
-    // them cannot change the result and are not swept. (Not in the paper; it is what makes clipping a small area out
-    // of a large data set cost little more than the sort of the polygons kept.) Leaving them out is exact, not a
-    // heuristic: a ring's winding number is 0 outside its box, so within the region the operand's interior, under
+    // An intersection lies where polygons of both operands are, and a difference where the subject's are: a polygon
+    // whose box meets no polygon's box of the other operand cannot change the result and is not swept. (Not in the
+    // paper; it is what makes clipping a small area out of a large data set, or a grid of tiles against a
+    // coastline, cost little more than the sort of the polygons kept.) Leaving them out is exact, not a heuristic:
+    // a ring's winding number is 0 outside its box, so wherever the result can lie the operand's interior, under
     // either fill rule, is that of the polygons kept.
+    let keep_all = |_: usize| true;
+    let (mut edges, polygons) = (Vec::new(), subject.0.len() + clipping.0.len());
+    // About as many cells as polygons.
+    let cells = (polygons as f64).sqrt().ceil().clamp(1.0, 1024.0) as usize;
+    let meeting = |boxes: &[Bounds], other: &[Bounds]| {
+        let coverage = input::Coverage::new(other, cells);
+        boxes
+            .iter()
+            .map(|b| coverage.may_meet(b))
+            .collect::<Vec<bool>>()
+    };
+    match operation {
+        Operation::Intersection => {
+            let kept = meeting(&subject_boxes, &clipping_boxes);
+            input::add_edges(&mut edges, subject, 0, |p| kept[p]);
+            let kept = meeting(&clipping_boxes, &subject_boxes);
+            input::add_edges(&mut edges, clipping, 1, |p| kept[p]);
+        }
+        Operation::Difference => {
+            input::add_edges(&mut edges, subject, 0, keep_all);
+            let kept = meeting(&clipping_boxes, &subject_boxes);
+            input::add_edges(&mut edges, clipping, 1, |p| kept[p]);
+        }
+        Operation::Union | Operation::Xor => {
+            input::add_edges(&mut edges, subject, 0, keep_all);
+            input::add_edges(&mut edges, clipping, 1, keep_all);
+        }
+    }
     let (subject_box, clipping_box) = (
         Bounds::around_all(&subject_boxes),
         Bounds::around_all(&clipping_boxes),
     );
-    let (subject_region, clipping_region) = match operation {
-        Operation::Intersection => (clipping_box, subject_box),
-        Operation::Difference => (Bounds::EVERYWHERE, subject_box),
-        Operation::Union | Operation::Xor => (Bounds::EVERYWHERE, Bounds::EVERYWHERE),
-    };
-    let mut edges = Vec::new();
-    input::add_edges(&mut edges, subject, 0, |p| {
-        subject_boxes[p].meets(&subject_region)
-    });
-    input::add_edges(&mut edges, clipping, 1, |p| {
-        clipping_boxes[p].meets(&clipping_region)
-    });
     Ok(sweep(
         edges,
         Selection::Pair {

@@ -1,6 +1,9 @@
 //! Cases found by review, each with its expectation worked out by hand.
 
-use polysweep::{difference, intersection, union, MultiPolygon, Point, MIN_COORDINATE};
+use polysweep::{
+    difference, intersection, overlay_with_stats, union, MultiPolygon, Operation, Options, Point,
+    MIN_COORDINATE,
+};
 
 /// Intersection and difference skip polygons outside the box where the result can lie. A hole ring may reach
 /// outside its own exterior (under even-odd its outer part is filled), so that box must be of all the rings.
@@ -89,4 +92,43 @@ fn a_crossing_nearer_an_axis_than_the_smallest_coordinate_is_valid_input_again()
     assert_eq!(result.0[0].exterior, expected);
     // Fed back in: the intersection lies inside b, so the union is b.
     assert_eq!(union(&result, &b).unwrap().area(), 6.0);
+}
+
+/// Polygons whose box meets no polygon's box of the other operand are left out of an intersection (and clipping
+/// polygons out of a difference), even inside the other operand's box; those that meet one are kept. Subject:
+/// A = [10, 11] × [90, 91] and B = [50, 52]²; clipping: C = [0, 1]², D = [100, 101]² and E = [51, 53]². A lies
+/// inside the clipping operand's box but apart from C, D and E (on the grid of 3 × 3 cells the five polygons get,
+/// A's cell is one no clipping box touches); C and D lie outside the subject's box. Expected by hand: the
+/// intersection is B ∩ E = [51, 52]², area 1, from B and E only (8 edges swept); the difference is
+/// A + B − E, area 1 + 4 − 1, from A, B and E (12 edges).
+#[test]
+fn polygons_apart_from_the_other_operand_are_left_out() {
+    let boxes = |corners: &[[f64; 3]]| {
+        let coordinates: Vec<Vec<Vec<[f64; 2]>>> = (corners.iter())
+            .map(|&[x, y, size]| {
+                vec![vec![
+                    [x, y],
+                    [x + size, y],
+                    [x + size, y + size],
+                    [x, y + size],
+                ]]
+            })
+            .collect();
+        MultiPolygon::from_coordinates(&coordinates)
+    };
+    let subject = boxes(&[[10.0, 90.0, 1.0], [50.0, 50.0, 2.0]]);
+    let clipping = boxes(&[[0.0, 0.0, 1.0], [100.0, 100.0, 1.0], [51.0, 51.0, 2.0]]);
+    let options = Options::default();
+    for (operation, area, edges) in [
+        (Operation::Intersection, 1.0, 8),
+        (Operation::Difference, 4.0, 12),
+    ] {
+        let (result, stats) = overlay_with_stats(operation, &subject, &clipping, &options).unwrap();
+        assert_eq!(
+            (result.area(), stats.input_edges),
+            (area, edges),
+            "{operation:?}"
+        );
+        assert!(polysweep::validate(&result).is_ok());
+    }
 }
