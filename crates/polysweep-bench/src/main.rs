@@ -104,12 +104,6 @@ fn timed_rounds(engines: &mut [&mut dyn FnMut() -> f64]) -> Vec<(Vec<f64>, f64)>
     times.into_iter().zip(areas).collect()
 }
 
-/// Median and fastest time of one engine's timed runs (see [`timed_rounds`]), and its result area.
-fn median_ms(run: &mut dyn FnMut() -> f64) -> (f64, f64, f64) {
-    let (times, area) = timed_rounds(&mut [run]).remove(0);
-    (times[times.len() / 2], times[0], area)
-}
-
 fn geo_multipolygon(c: &Coordinates) -> geo::MultiPolygon<f64> {
     let line = |r: &Vec<[f64; 2]>| {
         geo::LineString::from(r.iter().map(|p| (p[0], p[1])).collect::<Vec<_>>())
@@ -190,6 +184,8 @@ impl Filter {
 /// One engine's run of a workload, returning the result's area.
 type Engine<'a> = Box<dyn FnMut() -> f64 + 'a>;
 
+/// Runs every engine on one workload, and with the intersection the sort floor (see `main`) in the same rounds, so
+/// that the floor and the engines meet the machine's slow and fast phases alike.
 fn run_all(
     operation: &str,
     land: &Inputs,
@@ -197,6 +193,7 @@ fn run_all(
     n: usize,
     filter: &Filter,
     out: &mut Vec<Value>,
+    floors: &mut Vec<Value>,
 ) {
     let op = match operation {
         "intersection" => (Operation::Intersection, OverlayRule::Intersect),
@@ -247,13 +244,32 @@ fn run_all(
             }),
         ),
     ];
-    let (names, mut runs): (Vec<&str>, Vec<Engine>) = engines
-        .into_iter()
+    // The floor: sorting the 2n endpoints of the edges, as the event queue's initial sort does (the same inputs,
+    // so the same floor, for union and difference).
+    let points: Vec<[f64; 2]> = (land.shapes.iter().chain(&clip.shapes))
+        .flatten()
+        .flat_map(|r| r.windows(2).flat_map(|w| [w[0], w[1]]))
+        .collect();
+    let floor: Engine = Box::new(|| {
+        let mut p = points.clone();
+        p.sort_unstable_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+        p[0][0]
+    });
+    let floor = (operation == "intersection").then_some(("floor", floor));
+    let (names, mut runs): (Vec<&str>, Vec<Engine>) = (engines.into_iter().chain(floor))
         .filter(|(e, _)| filter.engine(e))
         .unzip();
     let mut runs: Vec<&mut dyn FnMut() -> f64> = runs.iter_mut().map(|r| &mut **r as _).collect();
     for (engine, (times, area)) in names.into_iter().zip(timed_rounds(&mut runs)) {
         let (ms, fastest) = (times[times.len() / 2], times[0]);
+        if engine == "floor" {
+            println!(
+                "{:>12} {n:>6} squares  {:<10} {ms:>9.2} ms",
+                "sort floor", ""
+            );
+            floors.push(json!({ "squares": n, "median_ms": ms }));
+            continue;
+        }
         println!("{operation:>12} {n:>6} squares  {engine:<10} {ms:>9.2} ms  (fastest {fastest:>8.2})  area {area:.6}");
         out.push(json!({ "engine": engine, "operation": operation, "squares": n, "median_ms": ms, "area": area }));
     }
@@ -288,32 +304,27 @@ fn main() {
         )
         .unwrap();
         let clip = Inputs::new(grid);
-        run_all("intersection", &land, &clip, n, &filter, &mut runs);
-        if n == 3895 {
-            run_all("union", &land, &clip, n, &filter, &mut runs);
-            run_all("difference", &land, &clip, n, &filter, &mut runs);
-        }
-        // The floor: sorting the 2n endpoints of the edges, as the event queue's initial sort does.
-        if !filter.engine("floor") {
-            continue;
-        }
-        let points: Vec<[f64; 2]> = land
-            .shapes
-            .iter()
-            .chain(&clip.shapes)
-            .flatten()
-            .flat_map(|r| r.windows(2).flat_map(|w| [w[0], w[1]]))
-            .collect();
-        let (ms, _, _) = median_ms(&mut || {
-            let mut p = points.clone();
-            p.sort_unstable_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
-            p[0][0]
-        });
-        println!(
-            "{:>12} {n:>6} squares  {:<10} {ms:>9.2} ms",
-            "sort floor", ""
+        run_all(
+            "intersection",
+            &land,
+            &clip,
+            n,
+            &filter,
+            &mut runs,
+            &mut floor,
         );
-        floor.push(json!({ "squares": n, "median_ms": ms }));
+        if n == 3895 {
+            run_all("union", &land, &clip, n, &filter, &mut runs, &mut floor);
+            run_all(
+                "difference",
+                &land,
+                &clip,
+                n,
+                &filter,
+                &mut runs,
+                &mut floor,
+            );
+        }
     }
     for (n, reference) in REFERENCE {
         for run in runs
