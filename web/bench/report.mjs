@@ -355,7 +355,7 @@ function markdown(native, wasm, targets, args) {
     parts.push(perfSection({
       title: 'Intersection series, union and difference at ' + FULL_N, data: native, peers: enginesOf(native, NATIVE_PEERS).filter((e) => e !== 'polysweep'),
       info: [], floor, workloads: workloadsIn(native),
-      note: 'One process (crates/polysweep-bench). Sort floor: the time to sort the workload\'s 2n event points; the same inputs, so the same floor, for ∪ and − at ' + FULL_N + '.',
+      note: 'One process (crates/polysweep-bench). Sort floor: the time to sort the workload\'s 2n event points, timed in the same rounds as the engines of the intersection; the same inputs, so the same floor, for ∪ and − at ' + FULL_N + '.',
     }), '');
   } else parts.push('native.json missing: run the native benchmark (crates/polysweep-bench).', '');
 
