@@ -166,6 +166,9 @@ pub(crate) fn event_order(
     let (ea, eb) = (&events[a as usize], &events[b as usize]);
     exact
         .cmp_points(&ea.point, &eb.point)
+        // Right before left (as `order_at_point` begins), without reading the edges: the events of one crossing,
+        // two of each, meet in the heap.
+        .then_with(|| ea.left().cmp(&eb.left()))
         .then_with(|| order_at_point(exact, &at_point(a), &at_point(b)))
         .then(a.cmp(&b))
 }
