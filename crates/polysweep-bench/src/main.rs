@@ -244,18 +244,22 @@ fn run_all(
             }),
         ),
     ];
-    // The floor: sorting the 2n endpoints of the edges, as the event queue's initial sort does (the same inputs,
-    // so the same floor, for union and difference).
-    let points: Vec<[f64; 2]> = (land.shapes.iter().chain(&clip.shapes))
-        .flatten()
-        .flat_map(|r| r.windows(2).flat_map(|w| [w[0], w[1]]))
-        .collect();
+    // The floor: sorting the 2n endpoints of the edges, as the event queue's initial sort does. Timed with the
+    // intersection only: the same inputs, so the same floor, for union and difference.
+    let points: Vec<[f64; 2]> = if operation == "intersection" && filter.engine("floor") {
+        (land.shapes.iter().chain(&clip.shapes))
+            .flatten()
+            .flat_map(|r| r.windows(2).flat_map(|w| [w[0], w[1]]))
+            .collect()
+    } else {
+        Vec::new()
+    };
     let floor: Engine = Box::new(|| {
         let mut p = points.clone();
         p.sort_unstable_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
         p[0][0]
     });
-    let floor = (operation == "intersection").then_some(("floor", floor));
+    let floor = (!points.is_empty()).then_some(("floor", floor));
     let (names, mut runs): (Vec<&str>, Vec<Engine>) = (engines.into_iter().chain(floor))
         .filter(|(e, _)| filter.engine(e))
         .unzip();

@@ -18,8 +18,7 @@
 
 use crate::events::{InputEdge, NONE};
 use crate::exact::{Exact, SweepPoint};
-use crate::geometry::{larger, MultiPolygon, Point, Polygon, Ring};
-use crate::input::{nearest_accepted, MIN_COORDINATE};
+use crate::geometry::{MultiPolygon, Point, Polygon, Ring};
 use crate::sweep::ResultEdge;
 use crate::validate::Side;
 use std::cmp::Ordering;
@@ -164,17 +163,13 @@ fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge]) -> Rings 
     rings
 }
 
-/// How far, in gaps between output coordinates, a rounded crossing point must be from every other vertex for
-/// rounding to be harmless: it moved by at most half a gap, and so did its neighbours.
+/// How far, in ulps of its coordinates, a rounded crossing point must be from every other vertex for rounding to
+/// be harmless: it moved by at most half an ulp, and so did its neighbours.
 const ROUNDING_CLEARANCE_ULPS: f64 = 4.0;
 
-/// The distance under which rounding could move points of magnitude `magnitude` at most across each other. The
-/// gap between output coordinates is an ulp, and near zero, where they are snapped to the input's range
-/// ([`nearest_accepted`]), `MIN_COORDINATE`: the larger of the two, so that the clearance grows with the
-/// magnitude.
+/// The distance under which rounding could move points of magnitude `magnitude` across each other.
 pub(crate) fn clearance(magnitude: f64) -> f64 {
-    let ulp = f64::from_bits(magnitude.to_bits() + 1) - magnitude;
-    larger(ulp, MIN_COORDINATE) * ROUNDING_CLEARANCE_ULPS
+    (f64::from_bits(magnitude.to_bits() + 1) - magnitude) * ROUNDING_CLEARANCE_ULPS
 }
 
 /// Could rounding have broken the output? Only where a rounded crossing point lands within a few ulps of another
@@ -245,8 +240,8 @@ fn within_in_x(vertices: &[SweepPoint], i: usize, dx: f64) -> (usize, usize) {
 /// Ranges of vertices longer than this are searched run by run rather than scanned (see `rounding_may_matter`).
 const LONG_RANGE: usize = 64;
 
-/// Output vertex of each sweep vertex on a result edge: its coordinates rounded to f64 (and to the input's range,
-/// [`nearest_accepted`]), where distinct exact points that round to the same floats become one vertex. Vertices on no result edge (most of them, when little of the
+/// Output vertex of each sweep vertex on a result edge: its coordinates rounded to f64, where distinct exact points
+/// that round to the same floats become one vertex. Vertices on no result edge (most of them, when little of the
 /// input is kept) are left out, so that the ring walk's tables are only as large as the result.
 fn merge_rounded(vertices: &[SweepPoint], edges: &[ResultEdge]) -> (Vec<u32>, Vec<Point>) {
     // `NONE` for a vertex on no result edge; the others are marked (0) here and numbered below.
@@ -258,7 +253,7 @@ fn merge_rounded(vertices: &[SweepPoint], edges: &[ResultEdge]) -> (Vec<u32>, Ve
     // Rounding is monotone, so the vertices that round to one x are consecutive in sweep order. While they all
     // have that x exactly (input vertices, and crossings on a vertical line or a grid's column), they come in y
     // order, so those that round to one point are consecutive too: each is compared with the one before. Once a
-    // crossing whose x is rounded (or snapped) joins the block, exact x and y order no longer agree with the rounded point's,
+    // crossing whose x is rounded joins the block, exact x and y order no longer agree with the rounded point's,
     // and the block's points go into a map of rounded points. The map is keyed by both coordinates and never
     // cleared, so a large block does not make every later block pay for its size.
     let mut block: Vec<usize> = Vec::new();
@@ -267,40 +262,28 @@ fn merge_rounded(vertices: &[SweepPoint], edges: &[ResultEdge]) -> (Vec<u32>, Ve
     let mut in_crossing_blocks: HashMap<[u64; 2], u32, foldhash::fast::FixedState> =
         HashMap::default();
     let key = |p: [f64; 2]| p.map(|v| (v + 0.0).to_bits()); // -0 as 0
-                                                            // The output point of a vertex already numbered, and of the block's last one.
-    let written = |points: &[Point], ids: &[u32], j: usize| {
-        let p = points[ids[j] as usize];
-        [p.x, p.y]
-    };
-    let mut last_written = [0.0; 2];
     for (i, v) in vertices.iter().enumerate() {
         if ids[i] == NONE {
             continue;
         }
-        // (Input vertices are accepted coordinates already.)
-        let [x, y] = if v.is_input() {
-            v.approx
-        } else {
-            v.approx.map(nearest_accepted)
-        };
-        if !block.is_empty() && last_written[0] != x {
+        let [x, y] = v.approx;
+        if block.last().is_some_and(|&j| vertices[j].approx[0] != x) {
             block.clear();
             block_has_rounded_x = false;
         }
-        let x_is_exact = v.is_exact(0) && x == v.approx[0];
-        if !x_is_exact && !block_has_rounded_x {
+        if !v.is_exact(0) && !block_has_rounded_x {
             block_has_rounded_x = true;
             for &j in &block {
-                in_crossing_blocks.insert(key(written(&points, &ids, j)), ids[j]);
+                in_crossing_blocks.insert(key(vertices[j].approx), ids[j]);
             }
         }
         let same = if block_has_rounded_x {
-            in_crossing_blocks.get(&key([x, y])).copied()
+            in_crossing_blocks.get(&key(v.approx)).copied()
         } else {
             // (Two input vertices are distinct floats: only a crossing can round onto its neighbour.)
             (block.last())
                 .filter(|&&j| !(v.is_input() && vertices[j].is_input()))
-                .filter(|_| last_written == [x, y])
+                .filter(|&&j| { vertices[j].approx } == [x, y])
                 .map(|&j| ids[j])
         };
         let id = same.unwrap_or_else(|| {
@@ -309,9 +292,8 @@ fn merge_rounded(vertices: &[SweepPoint], edges: &[ResultEdge]) -> (Vec<u32>, Ve
         });
         ids[i] = id;
         block.push(i);
-        last_written = [x, y];
         if block_has_rounded_x {
-            in_crossing_blocks.insert(key([x, y]), id);
+            in_crossing_blocks.insert(key(v.approx), id);
         }
     }
     (ids, points)

@@ -8,26 +8,8 @@ use crate::geometry::{larger, open_len, smaller, MultiPolygon, Point, Polygon};
 /// Largest coordinate magnitude accepted: 2^200. Within it (and above [`MIN_COORDINATE`]) the products formed by
 /// the exact predicates neither overflow nor underflow, which their proofs assume.
 pub const MAX_COORDINATE: f64 = (1u128 << 100) as f64 * (1u128 << 100) as f64;
-/// Smallest non-zero coordinate magnitude accepted: 2^-200. A result is always accepted input again: its
-/// coordinates go through [`nearest_accepted`].
+/// Smallest non-zero coordinate magnitude accepted: 2^-200.
 pub const MIN_COORDINATE: f64 = 1.0 / MAX_COORDINATE;
-
-/// The accepted coordinate nearest to `value`, a finite coordinate of a result: `value` itself, or where its
-/// magnitude is below [`MIN_COORDINATE`], 0 or ±`MIN_COORDINATE`, whichever is nearer (0 on a tie). Crossings of
-/// accepted edges can lie arbitrarily close to an axis; snapping them so keeps every result valid input for a
-/// next operation (and for the repair sweeps, which read the rounded result as input). It is monotone like
-/// rounding, and moves a coordinate by at most half of `MIN_COORDINATE`, which the rounding checks allow for (see
-/// [`crate::connect::clearance`]).
-pub(crate) fn nearest_accepted(value: f64) -> f64 {
-    let magnitude = value.abs();
-    if magnitude >= MIN_COORDINATE {
-        value
-    } else if magnitude > MIN_COORDINATE / 2.0 {
-        MIN_COORDINATE.copysign(value)
-    } else {
-        0.0
-    }
-}
 
 /// Checks every coordinate of `operand` (its index among the operation's operands is `index`), and returns the box
 /// of each of its polygons (of all its rings: a hole may reach outside its shell), made on the same pass. The pass
@@ -161,8 +143,9 @@ pub(crate) struct Coverage {
 }
 
 impl Coverage {
-    /// The coverage of `boxes` on a grid of `cells` × `cells`.
+    /// The coverage of `boxes` on a grid of `cells` × `cells` (one at least).
     pub fn new(boxes: &[Bounds], cells: usize) -> Self {
+        let cells = cells.max(1);
         let region = Bounds::around_all(boxes);
         let scale = [0, 1].map(|k| {
             let extent = region.max[k] - region.min[k];
@@ -313,6 +296,13 @@ mod tests {
         // Not a filter that always says yes: a fair share (here 227 of 814) of the boxes between the set's are ruled
         // out.
         assert!(ruled_out * 5 > apart, "{ruled_out} of {apart}");
+        // No cells asked for: one cell, not a panic.
+        let square = |x: f64| Bounds {
+            min: [x, 0.0],
+            max: [x + 1.0, 1.0],
+        };
+        let one_cell = Coverage::new(&[square(0.0), square(4.0)], 0);
+        assert!(one_cell.may_meet(&square(4.5)) && !one_cell.may_meet(&square(6.0)));
     }
 
     fn operand(rings: &[&[[f64; 2]]]) -> MultiPolygon {

@@ -32,8 +32,7 @@
 //!   its polygon's exterior; an island inside a hole is a polygon of its own;
 //! - an empty result is an empty `MultiPolygon`;
 //! - input vertices that no intersection touches come out bit-for-bit identical; intersection points are exact
-//!   until the output, where they are rounded to the nearest `f64` (and a coordinate nearer to 0 than
-//!   [`MIN_COORDINATE`] to 0 or ±`MIN_COORDINATE`), so that every result is valid input again.
+//!   until the output, where they are rounded to the nearest `f64`.
 //!
 //! Vertices where the boundary goes straight on (from the input, or where an edge of the other operand ended)
 //! are kept.

@@ -7,7 +7,6 @@ mod common;
 use common::*;
 use polysweep::{
     overlay, overlay_all, validate, FillRule, MultiPolygon, Operation, Options, Point, Polygon,
-    MIN_COORDINATE,
 };
 use proptest::prelude::*;
 
@@ -169,23 +168,6 @@ proptest! {
             let first = overlay(op, &a, &b, &Options::default()).unwrap();
             let chained = overlay(op, &first, &c, &Options::default()).unwrap();
             prop_assert!(chained.area().is_finite() && chained.area() >= 0.0);
-        }
-    }
-
-    /// x on a grid of the smallest accepted coordinate, y on the integers: most crossings then lie closer to a
-    /// vertical line than any accepted coordinate, and are snapped there. Every result is valid, and is accepted
-    /// as the input of the next operation.
-    #[test]
-    fn results_at_the_smallest_coordinates_are_valid_input_again(a in grid_operand(6), b in grid_operand(6)) {
-        let operand = |rings: Vec<Vec<(i32, i32)>>| MultiPolygon(rings.into_iter().map(|r| {
-            Polygon::new(r.into_iter().map(|(x, y)| Point::new((x - 3) as f64 * MIN_COORDINATE, y as f64)).collect(), vec![])
-        }).collect());
-        let (a, b) = (operand(a), operand(b));
-        for op in OPS {
-            let result = overlay(op, &a, &b, &Options::default()).unwrap();
-            prop_assert!(validate(&result).is_ok(), "{:?}: {:?}", op, validate(&result));
-            let again = overlay(Operation::Xor, &result, &b, &Options::default());
-            prop_assert!(again.as_ref().is_ok_and(|r| validate(r).is_ok()), "{:?}: {:?}", op, again);
         }
     }
 
