@@ -28,18 +28,16 @@ pub(crate) const NONE: u32 = u32::MAX;
 /// Subject or clipping operand (the paper's `pl`).
 pub(crate) type Operand = u8;
 
-/// Aligned to 64 bytes, its size: each event sits in one cache line, so reading one (its edge's other end, or a
-/// neighbour's in S) reads one line, where a 72-byte event (before the points were packed) spanned two.
+/// 44 bytes: the events are the sweep's largest array, read front to back and, for an edge's other end or a
+/// neighbour's, far from where the sweep is, so their size is most of its memory traffic. (Doubling it to 128 bytes
+/// made land × 32,768 squares take 1.5 times as long.) What the sweep reads of an edge while the edge is in S is in
+/// its node instead (see [`crate::sweep::InStatus`]).
 #[derive(Clone, Debug)]
-#[repr(align(64))]
 pub(crate) struct SweepEvent {
     pub point: SweepPoint,
     pub other: EventId,
-    /// The point of `other`, kept here because the sweep reads both ends of an edge together and `other` is
-    /// usually far away in memory.
-    pub other_point: SweepPoint,
-    /// The input segment and the side, as one word: the events are the sweep's largest array, and this and the
-    /// packed points keep an event to 64 bytes, one cache line (see [`Self::segment`] and [`Self::left`]).
+    /// The input segment, the side, and whether `other` is still one of the segment's initial events, as one word
+    /// (see [`Self::segment`], [`Self::left`] and [`far_point`]).
     segment_and_side: u32,
     /// How crossing this edge upwards (or, when vertical, from right to left) changes the winding number of each
     /// operand. Overlapping edges merged into this one add theirs (§7.2).
@@ -51,14 +49,19 @@ pub(crate) struct SweepEvent {
     pub result_edge: u32,
 }
 
-/// The bit of [`SweepEvent::segment_and_side`] that marks a left endpoint (input segments are fewer than 2^31).
+/// The bit of [`SweepEvent::segment_and_side`] that marks a left endpoint.
 const LEFT: u32 = 1 << 31;
+/// The bit of [`SweepEvent::segment_and_side`] that says the other end is the input segment's own endpoint: the
+/// edge has not been split on that side, so its other end's point is read from the input edge, which the sweep
+/// reads anyway, instead of from an event far away in memory. Input segments are fewer than 2^30 (they would take
+/// 40 GiB, and their events twice that, on top).
+const OTHER_AT_INPUT_END: u32 = 1 << 30;
 
 impl SweepEvent {
     /// Index of the input segment this edge lies on, among the sweep's input edges, which give its line (oriented
     /// in sweep order) and its operand; also a stable tie-break shared by all fragments of one input edge.
     pub fn segment(&self) -> u32 {
-        self.segment_and_side & !LEFT
+        self.segment_and_side & !(LEFT | OTHER_AT_INPUT_END)
     }
 
     /// Is this the left endpoint of its edge (first in sweep order)?
@@ -66,50 +69,59 @@ impl SweepEvent {
         self.segment_and_side & LEFT != 0
     }
 
-    /// The left or right event of input edge `segment`, `edge`, whose other event is `other`.
+    /// The left or right event of input edge `segment`, `edge`, whose other event is `other`, also an initial one.
     pub fn initial(edge: &InputEdge, segment: u32, left: bool, other: EventId) -> Self {
         let mut winding = [0; 2];
         winding[edge.operand as usize] = edge.winding;
-        let (a, b) = (
-            SweepPoint::input(edge.line.a),
-            SweepPoint::input(edge.line.b),
-        );
-        let (point, other_point) = if left { (a, b) } else { (b, a) };
-        SweepEvent {
-            other,
-            other_point,
-            ..Self::unprocessed(point, left, segment, winding)
-        }
+        let point = SweepPoint::input(if left { edge.line.a } else { edge.line.b });
+        let mut event = Self::unprocessed(point, left, segment, winding, other);
+        event.segment_and_side |= OTHER_AT_INPUT_END;
+        event
     }
 
-    /// A copy of this edge's identity (segment, winding) for a new event of one of its fragments.
-    pub fn fragment(
-        &self,
-        point: SweepPoint,
-        left: bool,
-        other: EventId,
-        other_point: SweepPoint,
-    ) -> Self {
-        SweepEvent {
-            other,
-            other_point,
-            ..Self::unprocessed(point, left, self.segment(), self.winding)
-        }
+    /// A copy of this edge's identity (segment, winding) for a new event of one of its fragments, made by a split:
+    /// its other end, `other`, is the split point or the far end of this edge.
+    pub fn fragment(&self, point: SweepPoint, left: bool, other: EventId) -> Self {
+        Self::unprocessed(point, left, self.segment(), self.winding, other)
+    }
+
+    /// Makes `other` the other end: a new event, made by a split (so not at the input segment's end).
+    pub fn set_other(&mut self, other: EventId) {
+        self.other = other;
+        self.segment_and_side &= !OTHER_AT_INPUT_END;
     }
 
     /// An event that the sweep has not reached yet: not in S, not in the result.
-    fn unprocessed(point: SweepPoint, left: bool, segment: u32, winding: [i32; 2]) -> Self {
-        debug_assert!(segment < LEFT, "more input segments than an event can name");
+    fn unprocessed(
+        point: SweepPoint,
+        left: bool,
+        segment: u32,
+        winding: [i32; 2],
+        other: EventId,
+    ) -> Self {
+        debug_assert!(
+            segment < OTHER_AT_INPUT_END,
+            "more input segments than an event can name"
+        );
         SweepEvent {
             point,
-            other: NONE,
-            other_point: point,
+            other,
             segment_and_side: if left { segment | LEFT } else { segment },
             winding,
             node: NONE,
             result_edge: NONE,
         }
     }
+}
+
+/// The point of the other end of event `e`'s edge.
+pub(crate) fn far_point(events: &[SweepEvent], edges: &[InputEdge], e: EventId) -> SweepPoint {
+    let event = &events[e as usize];
+    if event.segment_and_side & OTHER_AT_INPUT_END == 0 {
+        return events[event.other as usize].point;
+    }
+    let line = &edges[event.segment() as usize].line;
+    SweepPoint::input(if event.left() { line.b } else { line.a })
 }
 
 /// An input edge (step 1 of Fig. 5), before it becomes its two events.
@@ -158,7 +170,7 @@ pub(crate) fn event_order(
         AtPoint {
             left: event.left(),
             line: edge.line,
-            far: event.other_point,
+            far: far_point(events, edges, e),
             operand: edge.operand,
             segment: event.segment(),
         }
@@ -429,15 +441,15 @@ mod tests {
             let other = &events[event.other as usize];
             assert_eq!(other.other as usize, i);
             assert_ne!(other.left(), event.left());
-            assert_eq!({ other.point.approx }, { event.other_point.approx });
+            let far = far_point(&events, &edges, i as EventId);
+            assert_eq!({ other.point.approx }, { far.approx });
         }
     }
 
     #[test]
-    fn an_event_takes_one_cache_line() {
+    fn an_event_is_small_and_finds_its_other_end() {
         // The events are the sweep's largest array (two or more per input edge): their size is its memory traffic.
-        assert_eq!(std::mem::size_of::<SweepEvent>(), 64);
-        assert_eq!(std::mem::align_of::<SweepEvent>(), 64);
+        assert_eq!(std::mem::size_of::<SweepEvent>(), 44);
         let edge = InputEdge {
             line: Line {
                 a: [0.0, 0.0],
@@ -446,8 +458,10 @@ mod tests {
             operand: 1,
             winding: -1,
         };
-        let point = SweepPoint::input([0.0, 0.0]);
-        for (segment, left) in [(0, true), (7, false), (LEFT - 1, true), (LEFT - 1, false)] {
+        let split_point = SweepPoint::input([0.5, 0.0]);
+        let largest = OTHER_AT_INPUT_END - 1;
+        let edges = vec![edge; 8];
+        for (segment, left) in [(0, true), (7, false), (largest, true), (largest, false)] {
             let event = SweepEvent::initial(&edge, segment, left, 5);
             assert_eq!((event.segment(), event.left()), (segment, left));
             assert_eq!(event.winding, [0, -1]);
@@ -455,8 +469,19 @@ mod tests {
                 { event.point.approx },
                 if left { edge.line.a } else { edge.line.b }
             );
-            let fragment = event.fragment(point, !left, 3, point);
+            let fragment = event.fragment(split_point, !left, 0);
             assert_eq!((fragment.segment(), fragment.left()), (segment, !left));
+            if segment < 8 {
+                // The other end: the input segment's end until a split makes it a new event.
+                let mut events = vec![fragment, event];
+                let at = |events: &[SweepEvent]| far_point(events, &edges, 1).approx;
+                assert_eq!(at(&events), if left { edge.line.b } else { edge.line.a });
+                events[1].set_other(0);
+                assert_eq!(
+                    (at(&events), events[1].segment()),
+                    (split_point.approx, segment)
+                );
+            }
         }
     }
 

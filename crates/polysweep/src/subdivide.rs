@@ -23,11 +23,11 @@ use crate::sweep::Sweep;
 use std::cmp::Ordering::Equal;
 
 impl Sweep<'_> {
-    /// possibleInter (Fig. 5) of two edges, given as left events, `lower` below `upper` in S.
+    /// possibleInter (Fig. 5) of two edges, given by their nodes in S, `lower` below `upper`. It reads the nodes,
+    /// not the events.
     #[inline(always)]
-    pub(crate) fn possible_inter(&mut self, lower: EventId, upper: EventId) {
-        let (a1, b1) = (self.point(lower), self.other_point(lower));
-        let (a2, b2) = (self.point(upper), self.other_point(upper));
+    pub(crate) fn possible_inter(&mut self, lower: u32, upper: u32) {
+        let ((a1, b1), (a2, b2)) = (self.ends(lower), self.ends(upper));
         // Edges whose ranges of y lie apart cannot meet (not in the paper: a cheaper test that tells most neighbours
         // apart). It is exact: correct rounding is monotone, so approximations strictly apart are exact values
         // strictly apart.
@@ -40,12 +40,12 @@ impl Sweep<'_> {
             return;
         }
         // Read as needed: most other pairs are told apart by the first two tests, without `lower`'s line.
-        let l2 = self.input_edge(upper).line;
+        let l2 = self.status.key(upper).line;
         let (s1, s2) = (self.exact.orient(&l2, &a1), self.exact.orient(&l2, &b1));
         if s1 == s2 && s1 != Equal {
             return; // `lower` lies on one side of `upper`'s line
         }
-        let l1 = self.input_edge(lower).line;
+        let l1 = self.status.key(lower).line;
         let (s3, s4) = (self.exact.orient(&l1, &a2), self.exact.orient(&l1, &b2));
         if s3 == s4 && s3 != Equal {
             return;
@@ -61,37 +61,37 @@ impl Sweep<'_> {
             (_, _, _, Equal) => b2,
             _ => {
                 let x = self.exact.crossing(&l1, &l2);
-                self.split(lower, x);
-                self.split(upper, x);
+                self.split(self.status.event(lower), x);
+                self.split(self.status.event(upper), x);
                 return;
             }
         };
-        for edge in [lower, upper] {
-            if self.strictly_inside(edge, &meeting) {
-                self.split(edge, meeting);
+        for node in [lower, upper] {
+            if self.strictly_inside(node, &meeting) {
+                self.split(self.status.event(node), meeting);
             }
         }
     }
 
-    /// §7.2: two collinear edges. Splits each at the other's endpoints that lie inside it, then merges the
-    /// fragments that coincide.
-    fn overlap(&mut self, lower: EventId, upper: EventId) {
-        let (a1, b1) = (self.point(lower), self.other_point(lower));
-        let (a2, b2) = (self.point(upper), self.other_point(upper));
+    /// §7.2: two collinear edges, given by their nodes in S. Splits each at the other's endpoints that lie inside
+    /// it, then merges the fragments that coincide.
+    fn overlap(&mut self, lower: u32, upper: u32) {
+        let ((a1, b1), (a2, b2)) = (self.ends(lower), self.ends(upper));
         if self.exact.cmp_points(&b1, &a2) != std::cmp::Ordering::Greater
             || self.exact.cmp_points(&b2, &a1) != std::cmp::Ordering::Greater
         {
             return; // they touch at an endpoint at most
         }
-        for (edge, [first, last]) in [(lower, [a2, b2]), (upper, [a1, b1])] {
-            // The far point first, so that `edge` keeps its left part and the second split cuts that part.
+        for (node, [first, last]) in [(lower, [a2, b2]), (upper, [a1, b1])] {
+            // The far point first, so that the edge keeps its left part and the second split cuts that part.
             for p in [last, first] {
-                if self.strictly_inside(edge, &p) {
-                    self.split(edge, p);
+                if self.strictly_inside(node, &p) {
+                    self.split(self.status.event(node), p);
                 }
             }
         }
         if self.exact.cmp_points(&a1, &a2) == Equal {
+            let (lower, upper) = (self.status.event(lower), self.status.event(upper));
             // Both now run from the common left point to the nearer right point: one edge from now on.
             // The edge being inserted is the one that leaves: edges above the other may already refer to it.
             let (keep, merged) = if lower == self.inserting {
@@ -103,21 +103,27 @@ impl Sweep<'_> {
         }
     }
 
-    /// Fig. 6: splits the edge of left event `edge` at `p`, which lies on it strictly between its endpoints.
+    /// The left and right endpoints of the edge at `node` in S.
+    fn ends(&self, node: u32) -> (SweepPoint, SweepPoint) {
+        let edge = self.status.key(node);
+        (edge.left, edge.right)
+    }
+
+    /// Fig. 6: splits the edge of left event `edge`, which is in S, at `p`, which lies on it strictly between its
+    /// endpoints.
     pub(crate) fn split(&mut self, edge: EventId, p: SweepPoint) {
-        let right = self.event(edge).other;
+        let base = self.event(edge).clone();
+        let right = base.other;
         let (new_right, new_left) = (
             self.events.len() as EventId,
             self.events.len() as EventId + 1,
         );
-        let base = self.event(edge).clone();
-        let far = base.other_point;
-        self.events.push(base.fragment(p, false, edge, base.point));
-        self.events.push(base.fragment(p, true, right, far));
-        for (end, other) in [(edge, new_right), (right, new_left)] {
-            self.events[end as usize].other = other;
-            self.events[end as usize].other_point = p;
-        }
+        self.events.push(base.fragment(p, false, edge));
+        self.events.push(base.fragment(p, true, right));
+        self.events[edge as usize].set_other(new_right);
+        self.events[right as usize].set_other(new_left);
+        debug_assert_ne!(base.node, crate::events::NONE, "split of an edge not in S");
+        self.status.key_mut(base.node).right = p;
         self.push(new_right);
         self.push(new_left);
     }

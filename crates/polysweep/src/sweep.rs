@@ -28,7 +28,8 @@
 //! of all instructions each (callgrind, Table 1's workloads).
 
 use crate::events::{
-    event_order, initial_events, EventId, EventQueue, InputEdge, Operand, SweepEvent, NONE,
+    event_order, far_point, initial_events, EventId, EventQueue, InputEdge, Operand, SweepEvent,
+    NONE,
 };
 use crate::exact::{Exact, Line, SweepPoint};
 use crate::geometry::larger;
@@ -49,15 +50,19 @@ pub(crate) struct ResultEdge {
 }
 
 /// What S keeps of an edge while the edge is in it: what the status order reads (see [`Sweep::is_below`]), which
-/// never changes while the edge is there; and what the sweep reads when the edge above it is inserted or when it
-/// ends, its flags of Fig. 9 and the output vertex at its left end. Kept in the node, not in the event, because
-/// S is small and read all the time, and the events are many.
+/// never changes while the edge is there; its endpoints, which possibleInter reads (a split moves the right one);
+/// and what the sweep reads when the edge above it is inserted or when it ends, its flags of Fig. 9 and the output
+/// vertex at its left end. Kept in the node, not in the events, because S is small and read all the time, and the
+/// events are many: a neighbour's events are far behind and ahead in memory.
 #[derive(Clone, Copy)]
 pub(crate) struct InStatus {
-    line: Line,
+    pub line: Line,
     operand: Operand,
     segment: u32,
-    event: EventId,
+    pub event: EventId,
+    /// The endpoints of the edge (not of its input segment), left and right.
+    pub left: SweepPoint,
+    pub right: SweepPoint,
     flags: Flags,
     vertex: u32,
 }
@@ -127,8 +132,9 @@ impl<'a> Sweep<'a> {
         self.events[e as usize].point
     }
 
-    pub fn other_point(&self, e: EventId) -> SweepPoint {
-        self.event(e).other_point
+    /// The point at the other end of event `e`'s edge.
+    pub fn far_point(&self, e: EventId) -> SweepPoint {
+        far_point(&self.events, self.edges, e)
     }
 
     /// The input edge that event `e`'s edge lies on.
@@ -140,21 +146,6 @@ impl<'a> Sweep<'a> {
         self.queue.push(e, |a, b| {
             event_order(&self.events, self.edges, &self.exact, a, b)
         });
-    }
-
-    /// The edge below `node` in S, as a left event, or `NONE`.
-    pub fn below(&self, node: u32) -> EventId {
-        match self.status.prev(node) {
-            NONE => NONE,
-            n => self.status.event(n),
-        }
-    }
-
-    fn above(&self, node: u32) -> EventId {
-        match self.status.next(node) {
-            NONE => NONE,
-            n => self.status.event(n),
-        }
     }
 
     /// Fig. 5's main loop.
@@ -208,7 +199,7 @@ impl<'a> Sweep<'a> {
         if side != Ordering::Equal {
             return side == Ordering::Less;
         }
-        match self.exact.orient(&old.line, &self.other_point(e)) {
+        match self.exact.orient(&old.line, &self.far_point(e)) {
             Ordering::Less => true,
             Ordering::Greater => false,
             Ordering::Equal => {
@@ -218,17 +209,18 @@ impl<'a> Sweep<'a> {
         }
     }
 
-    /// Does the edge of left event `e` pass through `p` strictly between its endpoints?
-    pub fn passes_through(&self, e: EventId, p: &SweepPoint) -> bool {
-        self.exact.orient(&self.input_edge(e).line, p) == Ordering::Equal
-            && self.strictly_inside(e, p)
+    /// Does the edge at `node` in S pass through `p` strictly between its endpoints?
+    pub fn passes_through(&self, node: u32, p: &SweepPoint) -> bool {
+        self.exact.orient(&self.status.key(node).line, p) == Ordering::Equal
+            && self.strictly_inside(node, p)
     }
 
-    /// Is `p` strictly between the endpoints of the edge of left event `e`, in sweep order? (For a point on the
+    /// Is `p` strictly between the endpoints of the edge at `node` in S, in sweep order? (For a point on the
     /// edge's line: is it inside the edge?)
-    pub fn strictly_inside(&self, e: EventId, p: &SweepPoint) -> bool {
-        self.exact.cmp_points(&self.point(e), p) == Ordering::Less
-            && self.exact.cmp_points(p, &self.other_point(e)) == Ordering::Less
+    pub fn strictly_inside(&self, node: u32, p: &SweepPoint) -> bool {
+        let edge = self.status.key(node);
+        self.exact.cmp_points(&edge.left, p) == Ordering::Less
+            && self.exact.cmp_points(p, &edge.right) == Ordering::Less
     }
 
     /// Rounding moves a constructed point by at most half an ulp, and an edge with such an end (even one made by a
@@ -250,7 +242,12 @@ impl<'a> Sweep<'a> {
         if node == NONE {
             return false;
         }
-        let InStatus { line, event, .. } = *self.status.key(node);
+        let InStatus {
+            line,
+            left: a,
+            right: b,
+            ..
+        } = *self.status.key(node);
         let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
         let cross = (p.approx[0] - line.a[0]) * dy - (p.approx[1] - line.a[1]) * dx;
         // distance = |cross| / |d|, compared squared to avoid the square root.
@@ -258,7 +255,6 @@ impl<'a> Sweep<'a> {
         if !within(self.widest_clearance) {
             return false;
         }
-        let (a, b) = (self.point(event), self.other_point(event));
         let magnitude = [a.approx, b.approx, p.approx]
             .iter()
             .flatten()
@@ -279,6 +275,8 @@ impl<'a> Sweep<'a> {
             operand: input.operand,
             segment: self.event(e).segment(),
             event: e,
+            left: self.point(e),
+            right: self.far_point(e),
             flags: Flags {
                 coverage_above: [0; 2],
                 in_result: false,
@@ -345,12 +343,12 @@ impl<'a> Sweep<'a> {
     fn settle(&mut self, e: EventId, node: u32, neighbours_checked: bool) {
         self.inserting = e;
         self.events[e as usize].node = node;
-        let (below, above) = (self.below(node), self.above(node));
+        let (below, above) = (self.status.prev(node), self.status.next(node));
         let p = self.current;
         if !neighbours_checked {
             for neighbour in [below, above] {
                 if neighbour != NONE && self.passes_through(neighbour, &p) {
-                    self.split(neighbour, p);
+                    self.split(self.status.event(neighbour), p);
                     self.status.remove(node);
                     self.events[e as usize].node = NONE;
                     self.push(e);
@@ -363,10 +361,11 @@ impl<'a> Sweep<'a> {
         self.set_flags(node);
 
         if below != NONE {
-            self.possible_inter(below, e);
+            self.possible_inter(below, node);
         }
+        // (Unless `e` was merged into the edge below and left S.)
         if above != NONE && self.event(e).node != NONE {
-            self.possible_inter(e, above);
+            self.possible_inter(node, above);
         }
         self.inserting = NONE;
         self.last_left = e;
@@ -378,7 +377,7 @@ impl<'a> Sweep<'a> {
         if node == NONE {
             return; // merged into an overlapping edge (§7.2)
         }
-        let (below, above) = (self.below(node), self.above(node));
+        let (below, above) = (self.status.prev(node), self.status.next(node));
         self.note_close_calls(&self.current.clone(), node);
         let edge = *self.status.key(node);
         if edge.flags.in_result {
@@ -448,7 +447,7 @@ impl<'a> Sweep<'a> {
         let key = self.status.key(n);
         match self.exact.orient(&key.line, &self.current) {
             Ordering::Equal => {
-                !self.strictly_inside(key.event, &self.current) && self.is_below(next, key) == above
+                !self.strictly_inside(n, &self.current) && self.is_below(next, key) == above
             }
             side => (side == Ordering::Less) == above,
         }
