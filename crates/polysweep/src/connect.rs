@@ -18,7 +18,7 @@
 
 use crate::events::{InputEdge, NONE};
 use crate::exact::{Exact, SweepPoint};
-use crate::geometry::{MultiPolygon, Point, Polygon, Ring};
+use crate::geometry::{larger, MultiPolygon, Point, Polygon, Ring};
 use crate::sweep::ResultEdge;
 use crate::validate::Side;
 use std::cmp::Ordering;
@@ -161,6 +161,27 @@ fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge]) -> Rings 
         }
     }
     rings
+}
+
+/// Is the sign of `area`, the area of the rounded `ring` as `ring_area` computes it, that of the exact ring's? It
+/// is when `area` is larger than rounding and the float sum can change it (here twice as large, for the bound's own
+/// rounding): each vertex moved by less than `clearance` of the largest coordinate, d, which changes the area by
+/// at most d times the sum of the edges' lengths (plus n·d²); and the shoelace sum, relative to the first vertex,
+/// has n terms of at most 2·r² each (r its largest offset from that vertex), each off by 4ε of itself at most, and
+/// the sum by nε more.
+fn sign_survives_rounding(ring: &[Point], area: f64) -> bool {
+    let first = ring[0];
+    let (mut magnitude, mut reach, mut perimeter) = (0.0f64, 0.0f64, 0.0f64);
+    for pair in ring.windows(2) {
+        let (a, b) = (pair[0], pair[1]);
+        magnitude = larger(magnitude, larger(a.x.abs(), a.y.abs()));
+        reach = larger(reach, larger((a.x - first.x).abs(), (a.y - first.y).abs()));
+        perimeter += (b.x - a.x).abs() + (b.y - a.y).abs(); // at least the length
+    }
+    let (n, d) = (ring.len() as f64, clearance(magnitude));
+    let rounding = d * perimeter + n * d * d;
+    let evaluation = (n + 4.0) * n * (f64::EPSILON / 2.0) * reach * reach;
+    area.abs() > 2.0 * (rounding + evaluation)
 }
 
 /// How far, in ulps of its coordinates, a rounded crossing point must be from every other vertex for rounding to
@@ -366,19 +387,23 @@ pub(crate) fn connect(
             (ring[(k + ring.len() - 1) % ring.len()], ring[k])
         })
         .collect();
-    // Orientation of the rounded ring (its signed area), checked exactly at the ring's first vertex in sweep order
-    // (vertex ids follow the sweep). A ring whose rounded copy has no area, or the opposite orientation, is a
-    // sliver thinner than rounding: it is dropped (`Equal`).
+    // Orientation of the rounded ring (its signed area). Where rounding could have flipped it (a ring thin enough),
+    // it is checked exactly at the ring's first exact vertex in sweep order (exact vertex ids follow the sweep;
+    // rounding can merge a later exact vertex into an earlier one, so the rounded vertices' order is not the exact
+    // one): the turn at an extreme vertex of a closed ring is its orientation. A ring whose rounded copy has no
+    // area, or the opposite orientation, is a sliver thinner than rounding: it is dropped (`Equal`).
     let turn: Vec<Ordering> = (rings.iter().zip(&written))
         .map(|(ring, rounded)| {
+            let area = crate::ring_area(rounded);
+            let rounded_turn = area.partial_cmp(&0.0).unwrap_or(Ordering::Equal);
+            if sign_survives_rounding(rounded, area) {
+                return rounded_turn;
+            }
             let k = (0..ring.len())
-                .min_by_key(|&k| edges[ring[k]].from)
+                .min_by_key(|&k| exact_ends[ring[k]].0)
                 .expect("rings are not empty");
             let (incoming, outgoing) = (ring[(k + ring.len() - 1) % ring.len()], ring[k]);
             let exact_turn = lines.cross(&edges[incoming], &edges[outgoing]);
-            let rounded_turn = crate::ring_area(rounded)
-                .partial_cmp(&0.0)
-                .unwrap_or(Ordering::Equal);
             // Where rounding merged vertices, the two edges need not meet at one exact point (an edge that shrank
             // to nothing was between them, and they can even run back along each other), or the ring can pass
             // straight through: then the turn says nothing and only the rounded orientation tells.
@@ -504,6 +529,33 @@ mod tests {
             assert_eq!(ids[a], ids[b]);
         }
         assert_eq!(points.len(), vertices.len() - 2);
+    }
+
+    #[test]
+    fn an_area_is_trusted_only_beyond_what_rounding_can_change() {
+        let ring = |points: &[[f64; 2]]| -> Ring {
+            (points.iter().chain(&points[..1]))
+                .map(|&[x, y]| Point::new(x, y))
+                .collect()
+        };
+        let sure = |r: &Ring| sign_survives_rounding(r, crate::ring_area(r));
+        // Far from the origin, where an ulp is 2^-45: a unit square, and triangles of height 1, 2^-20 and 2^-44 on a
+        // base of 1, which rounding by an ulp or two moves by about 2^-45 of area per unit of perimeter.
+        let (x, y) = (200.0, 100.0);
+        assert!(sure(&ring(&[
+            [x, y],
+            [x + 1.0, y],
+            [x + 1.0, y + 1.0],
+            [x, y + 1.0]
+        ])));
+        for (height, expected) in [(1.0, true), (2f64.powi(-20), true), (2f64.powi(-44), false)] {
+            for points in [
+                [[x, y], [x + 1.0, y], [x + 0.5, y + height]],
+                [[x, y], [x + 0.5, y + height], [x + 1.0, y]],
+            ] {
+                assert_eq!(sure(&ring(&points)), expected, "height {height}");
+            }
+        }
     }
 
     #[test]
