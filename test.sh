@@ -23,6 +23,9 @@ cargo fmt --all -- --check
 export PROPTEST_RNG_SEED="${PROPTEST_RNG_SEED:-20091}"
 cargo test --workspace --all-targets
 cargo test --workspace --doc
+# The core's property tests again, optimised, over ten times as many cases (about half a minute): the cases above
+# missed a ring lost to rounding (tests/regressions.rs) that runs of 4,000 with other seeds found.
+PROPTEST_CASES=3000 PROPTEST_MAX_GLOBAL_REJECTS=100000 cargo test --release -p polysweep --test properties
 # The Table 1 example of the README, end to end.
 cargo run --quiet --release -p polysweep --features geojson --example boolean -- intersection tests/data/land-50m.json.gz tests/data/squares-3895.json.gz > /dev/null
 
