@@ -28,7 +28,7 @@ pub(crate) const NONE: u32 = u32::MAX;
 /// Subject or clipping operand (the paper's `pl`).
 pub(crate) type Operand = u8;
 
-/// 44 bytes: the events are the sweep's largest array, read front to back and, for an edge's other end or a
+/// 40 bytes: the events are the sweep's largest array, read front to back and, for an edge's other end or a
 /// neighbour's, far from where the sweep is, so their size is most of its memory traffic. (Doubling it to 128 bytes
 /// made land × 32,768 squares take 1.5 times as long.) What the sweep reads of an edge while the edge is in S is in
 /// its node instead (see [`crate::sweep::InStatus`]).
@@ -42,12 +42,15 @@ pub(crate) struct SweepEvent {
     /// How crossing this edge upwards (or, when vertical, from right to left) changes the winding number of each
     /// operand. Overlapping edges merged into this one add theirs (§7.2).
     pub winding: [i32; 2],
-    /// Left events only: the edge's node in the sweep-line status, `NONE` when not in it. The node holds what the
-    /// sweep knows of the edge while it is in S, its flags of Fig. 9 among them (see [`crate::sweep::InStatus`]).
-    pub node: u32,
-    /// Left events only: index of the edge among the result edges, once recorded.
-    pub result_edge: u32,
+    /// Left events only: while the edge is in the sweep-line status, its node there (see [`Self::node`]); once it
+    /// has left S, its index among the result edges if it was recorded there, marked by `RECORDED` (see
+    /// [`Self::result_edge`]); otherwise `NONE`. One word for both, as an edge enters the result when it leaves S.
+    place: u32,
 }
+
+/// The bit of [`SweepEvent::place`] that marks a result edge's index, not a node. Both are fewer than 2^31 - 1: a
+/// node is an edge in S, a result edge a left event, and events are fewer than 2^32.
+const RECORDED: u32 = 1 << 31;
 
 /// The bit of [`SweepEvent::segment_and_side`] that marks a left endpoint.
 const LEFT: u32 = 1 << 31;
@@ -85,6 +88,42 @@ impl SweepEvent {
         Self::unprocessed(point, left, self.segment(), self.winding, other)
     }
 
+    /// The edge's node in the sweep-line status, `NONE` when not in it (left events only). The node holds what the
+    /// sweep knows of the edge while it is in S, its flags of Fig. 9 among them (see [`crate::sweep::InStatus`]).
+    pub fn node(&self) -> u32 {
+        if self.place & RECORDED != 0 {
+            NONE // (`NONE` has the bit too)
+        } else {
+            self.place
+        }
+    }
+
+    /// The edge's index among the result edges, `NONE` while it is not recorded there (left events only).
+    pub fn result_edge(&self) -> u32 {
+        if self.place != NONE && self.place & RECORDED != 0 {
+            self.place & !RECORDED
+        } else {
+            NONE
+        }
+    }
+
+    /// The edge enters S at `node`.
+    pub fn enter_status(&mut self, node: u32) {
+        debug_assert!(node < RECORDED);
+        self.place = node;
+    }
+
+    /// The edge leaves S, not recorded as a result edge.
+    pub fn leave_status(&mut self) {
+        self.place = NONE;
+    }
+
+    /// The edge leaves S as result edge `index`.
+    pub fn record(&mut self, index: u32) {
+        debug_assert!(index < RECORDED - 1, "would read as NONE");
+        self.place = index | RECORDED;
+    }
+
     /// Makes `other` the other end: a new event, made by a split (so not at the input segment's end).
     pub fn set_other(&mut self, other: EventId) {
         self.other = other;
@@ -108,8 +147,7 @@ impl SweepEvent {
             other,
             segment_and_side: if left { segment | LEFT } else { segment },
             winding,
-            node: NONE,
-            result_edge: NONE,
+            place: NONE,
         }
     }
 }
@@ -449,7 +487,7 @@ mod tests {
     #[test]
     fn an_event_is_small_and_finds_its_other_end() {
         // The events are the sweep's largest array (two or more per input edge): their size is its memory traffic.
-        assert_eq!(std::mem::size_of::<SweepEvent>(), 44);
+        assert_eq!(std::mem::size_of::<SweepEvent>(), 40);
         let edge = InputEdge {
             line: Line {
                 a: [0.0, 0.0],
@@ -482,6 +520,29 @@ mod tests {
                     (split_point.approx, segment)
                 );
             }
+        }
+    }
+
+    #[test]
+    fn an_event_knows_its_node_in_s_then_its_result_edge() {
+        let edge = InputEdge {
+            line: Line {
+                a: [0.0, 0.0],
+                b: [1.0, 0.0],
+            },
+            operand: 0,
+            winding: 1,
+        };
+        let mut event = SweepEvent::initial(&edge, 0, true, 1);
+        assert_eq!((event.node(), event.result_edge()), (NONE, NONE));
+        for (node, index) in [(0, 0), (RECORDED - 1, RECORDED - 2)] {
+            event.enter_status(node);
+            assert_eq!((event.node(), event.result_edge()), (node, NONE));
+            event.record(index);
+            assert_eq!((event.node(), event.result_edge()), (NONE, index));
+            event.enter_status(node);
+            event.leave_status();
+            assert_eq!((event.node(), event.result_edge()), (NONE, NONE));
         }
     }
 

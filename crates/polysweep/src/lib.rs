@@ -240,7 +240,7 @@ fn sweep_once(
         edges,
         &sweep.vertices,
         &mut sweep.result,
-        |e| events[e as usize].result_edge,
+        |e| events[e as usize].result_edge(),
     );
     (result, stats, suspect)
 }

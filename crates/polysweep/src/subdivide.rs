@@ -122,8 +122,12 @@ impl Sweep<'_> {
         self.events.push(base.fragment(p, true, right));
         self.events[edge as usize].set_other(new_right);
         self.events[right as usize].set_other(new_left);
-        debug_assert_ne!(base.node, crate::events::NONE, "split of an edge not in S");
-        self.status.key_mut(base.node).right = p;
+        debug_assert_ne!(
+            base.node(),
+            crate::events::NONE,
+            "split of an edge not in S"
+        );
+        self.status.key_mut(base.node()).right = p;
         self.push(new_right);
         self.push(new_left);
     }
@@ -135,8 +139,8 @@ impl Sweep<'_> {
         for (w, m) in self.events[keep as usize].winding.iter_mut().zip(winding) {
             *w += m;
         }
-        self.status.remove(self.event(merged).node);
-        self.events[merged as usize].node = crate::events::NONE;
-        self.set_flags(self.event(keep).node);
+        self.status.remove(self.event(merged).node());
+        self.events[merged as usize].leave_status();
+        self.set_flags(self.event(keep).node());
     }
 }

@@ -326,10 +326,10 @@ impl<'a> Sweep<'a> {
     /// first place fails measured worse: on the land it fails, and the steps cost more than they save.)
     fn place_after_last_left(&self, e: EventId) -> Option<u32> {
         let last = self.last_left;
-        if last == NONE || self.event(last).node == NONE {
+        if last == NONE || self.event(last).node() == NONE {
             return None;
         }
-        let node = self.event(last).node;
+        let node = self.event(last).node();
         let fits_below = |n: u32| n == NONE || self.is_below(e, self.status.key(n));
         (!self.is_below(e, self.status.key(node)) && fits_below(self.status.next(node)))
             .then_some(node)
@@ -342,7 +342,7 @@ impl<'a> Sweep<'a> {
     #[inline(always)]
     fn settle(&mut self, e: EventId, node: u32, neighbours_checked: bool) {
         self.inserting = e;
-        self.events[e as usize].node = node;
+        self.events[e as usize].enter_status(node);
         let (below, above) = (self.status.prev(node), self.status.next(node));
         let p = self.current;
         if !neighbours_checked {
@@ -350,7 +350,7 @@ impl<'a> Sweep<'a> {
                 if neighbour != NONE && self.passes_through(neighbour, &p) {
                     self.split(self.status.event(neighbour), p);
                     self.status.remove(node);
-                    self.events[e as usize].node = NONE;
+                    self.events[e as usize].leave_status();
                     self.push(e);
                     self.inserting = NONE;
                     return;
@@ -364,7 +364,7 @@ impl<'a> Sweep<'a> {
             self.possible_inter(below, node);
         }
         // (Unless `e` was merged into the edge below and left S.)
-        if above != NONE && self.event(e).node != NONE {
+        if above != NONE && self.event(e).node() != NONE {
             self.possible_inter(node, above);
         }
         self.inserting = NONE;
@@ -373,7 +373,7 @@ impl<'a> Sweep<'a> {
 
     fn process_right(&mut self, r: EventId) {
         let l = self.event(r).other;
-        let node = self.event(l).node;
+        let node = self.event(l).node();
         if node == NONE {
             return; // merged into an overlapping edge (§7.2)
         }
@@ -390,16 +390,17 @@ impl<'a> Sweep<'a> {
                 forward,
                 below: edge.flags.result_below,
             };
-            self.events[l as usize].result_edge = self.result.len() as u32;
+            self.events[l as usize].record(self.result.len() as u32);
             self.result.push(result_edge);
+        } else {
+            self.events[l as usize].leave_status();
         }
-        self.events[l as usize].node = NONE;
         if let Some(next) = self.successor_in_place(node) {
             self.status.replace(node, next, self.in_status(next));
             self.settle(next, node, true);
             // Should `next` have left S again (merged into a neighbour, or put back in Q), the neighbours it
             // separated are neighbours now, as on the ordinary path.
-            if self.event(next).node == NONE && below != NONE && above != NONE {
+            if self.event(next).node() == NONE && below != NONE && above != NONE {
                 self.possible_inter(below, above);
             }
             return;
