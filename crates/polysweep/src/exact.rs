@@ -220,8 +220,8 @@ impl Line {
 
 /// A point of the sweep: an input vertex, or the exact crossing of two input segments' lines.
 ///
-/// Packed to 20 bytes (alignment 4): an event holds two points, and this keeps an event to one 64-byte cache line
-/// (see [`crate::events::SweepEvent`]). Its fields are read by value, never by reference.
+/// Packed to 20 bytes (alignment 4), half of an event (see [`crate::events::SweepEvent`], the sweep's largest
+/// array), where a 24-byte point would make it 48. Its fields are read by value, never by reference.
 #[derive(Clone, Copy, Debug)]
 #[repr(C, packed(4))]
 pub(crate) struct SweepPoint {
