@@ -15,6 +15,11 @@
 //! Departure from the paper: §5 joins edges into chains by their end points in any order, which cannot tell which
 //! way to go at a vertex shared by more than two result edges, and does not say how holes find their polygons.
 //! The walk above decides both from the orientation of the edges.
+//!
+//! Not in the paper, which does not round: the vertices are rounded to floats here, and where the sweep saw an edge
+//! pass within a few ulps of a vertex and the edge passes through the vertex's rounding cell, the written ring
+//! bends the edge through the rounded vertex (snap rounding's hot pixel, see `snap_points` and the robustness
+//! page); the result is then swept again.
 
 use crate::events::{InputEdge, NONE};
 use crate::exact::{Exact, SweepPoint};
@@ -190,7 +195,13 @@ const ROUNDING_CLEARANCE_ULPS: f64 = 4.0;
 
 /// The distance under which rounding could move points of magnitude `magnitude` across each other.
 pub(crate) fn clearance(magnitude: f64) -> f64 {
-    (f64::from_bits(magnitude.to_bits() + 1) - magnitude) * ROUNDING_CLEARANCE_ULPS
+    ulp(magnitude) * ROUNDING_CLEARANCE_ULPS
+}
+
+/// The distance from `v` to the next float away from 0.
+fn ulp(v: f64) -> f64 {
+    let v = v.abs();
+    f64::from_bits(v.to_bits() + 1) - v
 }
 
 /// Could rounding have broken the output? Only where a rounded crossing point lands within a few ulps of another
@@ -339,7 +350,8 @@ fn innermost_shell_around(polygons: &[Polygon], hole: &[Point]) -> Option<usize>
 }
 
 /// Builds the output polygons from the result edges of a sweep. `below_edge` maps a left event to its result
-/// edge.
+/// edge; `close_pairs` are the sweep's close calls as (vertex, result edge), to be snapped. Also says whether any
+/// edge was bent through a vertex (then the result has to be swept again).
 ///
 /// Rounding is the one inexact step. A vertex moves by at most half an ulp; where several exact vertices round to
 /// one point they become one vertex (a pinch, cut by the walk), edges that shrink to nothing are dropped, and so
@@ -350,7 +362,8 @@ pub(crate) fn connect(
     vertices: &[SweepPoint],
     edges: &mut [ResultEdge],
     below_edge: impl Fn(u32) -> u32,
-) -> MultiPolygon {
+    close_pairs: &[(u32, u32)],
+) -> (MultiPolygon, bool) {
     let (vertex_ids, points) = merge_rounded(vertices, edges);
     // The exact vertices of each edge, before rounding merges some of them.
     let exact_ends: Vec<(u32, u32)> = edges.iter().map(|e| (e.from, e.to)).collect();
@@ -358,6 +371,7 @@ pub(crate) fn connect(
         e.from = vertex_ids[e.from as usize];
         e.to = vertex_ids[e.to as usize];
     }
+    let snaps = snap_points(input, edges, &vertex_ids, &points, close_pairs);
     let lines = Lines { exact, input };
     let rings = walk_rings(lines, points.len(), edges);
     let mut ring_of_edge = vec![NONE; edges.len()];
@@ -372,7 +386,14 @@ pub(crate) fn connect(
         .iter()
         .map(|ring| {
             let mut out: Ring = Vec::with_capacity(ring.len() + 1);
-            out.extend(ring.iter().map(|&e| points[edges[e].from as usize]));
+            for &e in ring {
+                out.push(points[edges[e].from as usize]);
+                if !snaps.is_empty() {
+                    let from = snaps.partition_point(|&(s, _)| (s as usize) < e);
+                    let to = snaps.partition_point(|&(s, _)| (s as usize) <= e);
+                    out.extend(snaps[from..to].iter().map(|&(_, p)| p));
+                }
+            }
             out.push(out[0]);
             out
         })
@@ -463,7 +484,55 @@ pub(crate) fn connect(
             polygons[p].holes.push(hole);
         }
     }
-    MultiPolygon(polygons)
+    (MultiPolygon(polygons), !snaps.is_empty())
+}
+
+/// Snap rounding of the close calls (Hobby's hot pixels): a result edge that passes through the rounding cell of a
+/// result vertex it came within a few ulps of is bent through that vertex's rounded point. Returns, for each such
+/// edge, the points to insert after its start, in order along it, sorted by edge.
+///
+/// The cell is the square of half an ulp around the rounded point, and the tests are in floats: a bend made or
+/// missed by their error is left to the repair sweep that follows, which is exact.
+fn snap_points(
+    input: &[InputEdge],
+    edges: &[ResultEdge],
+    vertex_ids: &[u32],
+    points: &[Point],
+    close_pairs: &[(u32, u32)],
+) -> Vec<(u32, Point)> {
+    let mut snaps: Vec<(u32, f64, Point)> = Vec::new();
+    for &(v, r) in close_pairs {
+        let id = vertex_ids[v as usize];
+        if id == NONE {
+            continue; // not a vertex of the result
+        }
+        let e = &edges[r as usize];
+        let (p, a, b) = (
+            points[id as usize],
+            points[e.from as usize],
+            points[e.to as usize],
+        );
+        if p == a || p == b {
+            continue;
+        }
+        let line = &input[e.segment as usize].line;
+        let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
+        let (hx, hy) = (ulp(p.x) / 2.0, ulp(p.y) / 2.0);
+        let cross = (p.x - line.a[0]) * dy - (p.y - line.a[1]) * dx;
+        // A line meets a box when its offset from the centre is at most the box's reach across it.
+        if cross.abs() > hx * dy.abs() + hy * dx.abs() {
+            continue;
+        }
+        // Where along the edge, from its start (0) to its end (1).
+        let (ex, ey) = (b.x - a.x, b.y - a.y);
+        let t = ((p.x - a.x) * ex + (p.y - a.y) * ey) / (ex * ex + ey * ey);
+        if t > 0.0 && t < 1.0 {
+            snaps.push((r, t, p));
+        }
+    }
+    snaps.sort_by(|x, y| x.0.cmp(&y.0).then(x.1.total_cmp(&y.1)));
+    snaps.dedup_by(|x, y| x.0 == y.0 && x.2 == y.2);
+    snaps.into_iter().map(|(r, _, p)| (r, p)).collect()
 }
 
 #[cfg(test)]

@@ -192,8 +192,9 @@ fn stop_x(operation: Operation, boxes: &[Bounds]) -> f64 {
 }
 
 /// Repair passes allowed after one operation. Each pass sweeps the rounded result, whose vertices are then exact
-/// inputs: a pass that constructs no new crossing point ends the repair. One pass has sufficed in every case seen;
-/// the bound only guarantees that the function returns.
+/// inputs: a pass that constructs no crossing point rounds nothing and ends the repair. On Table 1's data no pass is
+/// needed; on random decimal grids, one in 99.4% of the cases and three at most (see the robustness page); the
+/// bound only guarantees that the function returns.
 const MAX_REPAIR_PASSES: usize = 4;
 
 /// The sweep of Fig. 5 over `edges`, whose coordinates are of magnitude `magnitude` at most, then the result
@@ -233,16 +234,28 @@ fn sweep_once(
         events: sweep.events.len(),
         ..Stats::default()
     };
-    let suspect = sweep.close_call || connect::rounding_may_matter(&sweep.vertices);
+    // Without constructed points nothing is rounded: the output is the exact arrangement.
+    let rounded = stats.crossings > 0;
+    let suspect = rounded && (sweep.close_call || connect::rounding_may_matter(&sweep.vertices));
     let events = &sweep.events;
-    let result = connect::connect(
+    // Close calls to snap, as (vertex, result edge): only where rounding can move something.
+    let close_pairs: Vec<(u32, u32)> = if rounded {
+        (sweep.close_pairs.iter())
+            .map(|&(v, l)| (v, events[l as usize].result_edge()))
+            .filter(|&(_, r)| r != events::NONE)
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let (result, snapped) = connect::connect(
         &sweep.exact,
         edges,
         &sweep.vertices,
         &mut sweep.result,
         |e| events[e as usize].result_edge(),
+        &close_pairs,
     );
-    (result, stats, suspect)
+    (result, stats, suspect || snapped)
 }
 
 /// `subject ∩ clipping` under the even-odd rule.

@@ -90,6 +90,10 @@ pub(crate) struct Sweep<'a> {
     /// Some event point passed within a few ulps of a neighbouring edge: rounding the output could move one across
     /// the other (see `note_close_calls`).
     pub close_call: bool,
+    /// The close calls: a vertex (index into `vertices`) and the left event of the edge it came within a few ulps
+    /// of. The output bends such an edge through the vertex where the edge passes through the vertex's rounding cell
+    /// (see [`crate::connect`]).
+    pub close_pairs: Vec<(u32, EventId)>,
     /// The clearance of the largest magnitude of the input's coordinates, which bounds every point's (crossings
     /// lie between input vertices): edges farther than this from a point need no closer look.
     widest_clearance: f64,
@@ -120,6 +124,7 @@ impl<'a> Sweep<'a> {
             inserting: NONE,
             last_left: NONE,
             close_call: false,
+            close_pairs: Vec::new(),
             widest_clearance: crate::connect::clearance(magnitude),
         }
     }
@@ -225,14 +230,17 @@ impl<'a> Sweep<'a> {
 
     /// Rounding moves a constructed point by at most half an ulp, and an edge with such an end (even one made by a
     /// later split) by as much. So an event point can end up on the other side of a neighbouring edge only if it
-    /// lies within a few ulps of it; `close_call` notes it, and the result is then swept again.
-    /// `p` is checked against the neighbours of the edge at `node` in S.
+    /// lies within a few ulps of it; `close_call` notes it, and the result is then swept again; `close_pairs` notes
+    /// which vertex and edge, for the output to snap the edge to the vertex where it passes through its rounding
+    /// cell. `p`, the current vertex, is checked against the neighbours of the edge at `node` in S.
     #[inline(always)]
     fn note_close_calls(&mut self, p: &SweepPoint, node: u32) {
-        if self.is_close_call(p, self.status.prev(node))
-            || self.is_close_call(p, self.status.next(node))
-        {
-            self.close_call = true;
+        for neighbour in [self.status.prev(node), self.status.next(node)] {
+            if self.is_close_call(p, neighbour) {
+                self.close_call = true;
+                let pair = (self.current_vertex(), self.status.event(neighbour));
+                self.close_pairs.push(pair);
+            }
         }
     }
 

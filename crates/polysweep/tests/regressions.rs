@@ -1,7 +1,7 @@
 //! Cases found by review, each with its expectation worked out by hand.
 
 use polysweep::{
-    difference, intersection, overlay_with_stats, xor_all, MultiPolygon, Operation, Options,
+    difference, intersection, overlay_with_stats, union, xor_all, MultiPolygon, Operation, Options,
 };
 
 /// Intersection and difference skip polygons outside the box where the result can lie. A hole ring may reach
@@ -132,4 +132,50 @@ fn a_ring_is_checked_at_its_exact_extreme_vertex() {
         "area {} instead of {expected}",
         result.area()
     );
+}
+
+/// Found by a scratch run of random operands on a grid of spacing 0.1 (decimal coordinates, which floats do not
+/// represent, so vertices lie within ulps of other edges without being on them). Near (0.7, 0.2) the union
+/// has a cluster of crossings a few ulps apart; rounding them moved edges across each other, and the repair passes
+/// cycled on the same rounding without converging, leaving edges that cross. Expected: a valid result, of area
+/// 0.145545618597089... (the union integrated exactly in rationals from the floats given, slab by slab between the x
+/// of every vertex and crossing).
+#[test]
+fn rounding_a_cluster_of_crossings_leaves_no_edges_crossing() {
+    let a = MultiPolygon::from_coordinates(&[vec![vec![
+        [0.4, 0.7000000000000001],
+        [0.1, 0.2],
+        [0.2, 0.30000000000000004],
+        [0.4, 0.7000000000000001],
+    ]]]);
+    let b = MultiPolygon::from_coordinates(&[
+        vec![vec![
+            [0.4, 0.7000000000000001],
+            [0.4, 0.2],
+            [0.6000000000000001, 0.4],
+            [0.2, 0.0],
+            [0.8, 0.1],
+            [0.4, 0.5],
+            [0.30000000000000004, 0.4],
+            [0.4, 0.5],
+            [0.4, 0.7000000000000001],
+        ]],
+        vec![vec![
+            [0.7000000000000001, 0.2],
+            [0.2, 0.5],
+            [0.30000000000000004, 0.6000000000000001],
+            [0.7000000000000001, 0.1],
+            [0.4, 0.30000000000000004],
+            [0.7000000000000001, 0.2],
+        ]],
+        vec![vec![
+            [0.1, 0.30000000000000004],
+            [0.2, 0.5],
+            [0.30000000000000004, 0.1],
+            [0.1, 0.30000000000000004],
+        ]],
+    ]);
+    let result = union(&a, &b).unwrap();
+    assert_eq!(polysweep::validate(&result), Ok(()));
+    assert!((result.area() - 0.145_545_618_597_089_2).abs() < 1e-12);
 }
