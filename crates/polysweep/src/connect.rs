@@ -183,6 +183,9 @@ fn sign_survives_rounding(ring: &[Point], area: f64) -> bool {
         reach = larger(reach, larger((a.x - first.x).abs(), (a.y - first.y).abs()));
         perimeter += (b.x - a.x).abs() + (b.y - a.y).abs(); // at least the length
     }
+    // Not a tolerance: a proven bound on how far rounding and the float sum can move the area. It cannot change a
+    // decision, only who makes it: beyond the bound the rounded sign is the exact one, and within it the caller
+    // asks the exact turn at the ring's first exact vertex.
     let (n, d) = (ring.len() as f64, clearance(magnitude));
     let rounding = d * perimeter + n * d * d;
     let evaluation = (n + 4.0) * n * (f64::EPSILON / 2.0) * reach * reach;
@@ -491,8 +494,9 @@ pub(crate) fn connect(
 /// result vertex it came within a few ulps of is bent through that vertex's rounded point. Returns, for each such
 /// edge, the points to insert after its start, in order along it, sorted by edge.
 ///
-/// The cell is the square of half an ulp around the rounded point, and the tests are in floats: a bend made or
-/// missed by their error is left to the repair sweep that follows, which is exact.
+/// The cell is the square of half an ulp around the rounded point, and the tests are in floats. They decide no
+/// predicate of the sweep, only where the written ring takes a detour of an ulp or less: a bend made or missed by
+/// their error is left to the repair sweep that always follows a bend, which is exact.
 fn snap_points(
     input: &[InputEdge],
     edges: &[ResultEdge],

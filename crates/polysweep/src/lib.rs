@@ -206,7 +206,8 @@ fn sweep(
     stop_x: f64,
     magnitude: f64,
 ) -> (MultiPolygon, Stats) {
-    let (mut result, mut stats, mut suspect) = sweep_once(&edges, selection, stop_x, magnitude);
+    let (mut result, mut stats, mut suspect) =
+        sweep_once(&edges, selection, stop_x, magnitude, MAX_REPAIR_PASSES > 0);
     stats.input_edges = edges.len();
     while suspect && stats.repair_passes < MAX_REPAIR_PASSES {
         let mut edges = Vec::new();
@@ -215,17 +216,22 @@ fn sweep(
             operation: Operation::Union,
             operands: 1,
         };
-        (result, _, suspect) = sweep_once(&edges, repair, f64::INFINITY, magnitude);
         stats.repair_passes += 1;
+        let may_snap = stats.repair_passes < MAX_REPAIR_PASSES;
+        (result, _, suspect) = sweep_once(&edges, repair, f64::INFINITY, magnitude, may_snap);
     }
     (result, stats)
 }
 
+/// One sweep and its rounded result, and whether that result needs a repair pass. `may_snap`: a repair pass may
+/// follow. Edges bent through vertices (see `connect`) meet there only once the result is swept again, so the last
+/// pass allowed bends none and writes the result as rounded.
 fn sweep_once(
     edges: &[InputEdge],
     selection: Selection,
     stop_x: f64,
     magnitude: f64,
+    may_snap: bool,
 ) -> (MultiPolygon, Stats, bool) {
     let mut sweep = sweep::Sweep::new(edges, selection, stop_x, magnitude);
     sweep.run();
@@ -239,7 +245,7 @@ fn sweep_once(
     let suspect = rounded && (sweep.close_call || connect::rounding_may_matter(&sweep.vertices));
     let events = &sweep.events;
     // Close calls to snap, as (vertex, result edge): only where rounding can move something.
-    let close_pairs: Vec<(u32, u32)> = if rounded {
+    let close_pairs: Vec<(u32, u32)> = if rounded && may_snap {
         (sweep.close_pairs.iter())
             .map(|&(v, l)| (v, events[l as usize].result_edge()))
             .filter(|&(_, r)| r != events::NONE)
