@@ -577,7 +577,7 @@ impl Playground {
                 .request_repaint_after(std::time::Duration::from_millis(160));
         }
         let error_at = match &self.derived.outcome {
-            Some(Err(e)) => Some(e.location()),
+            Some(Err(e)) => e.location(),
             _ => None,
         };
         let error_vertex = error_at.and_then(|at| VertexId::from_location(&self.scene, &at));

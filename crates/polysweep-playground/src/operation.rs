@@ -91,8 +91,10 @@ pub fn region(scene: &Scene, which: Operand, fill_rule: FillRule) -> Result<Mult
 }
 
 fn swap_operands(mut error: Error) -> Error {
-    let (Error::NonFiniteCoordinate { at, .. } | Error::CoordinateOutOfRange { at, .. }) =
-        &mut error;
-    at.operand = 1 - at.operand;
+    if let Error::NonFiniteCoordinate { at, .. } | Error::CoordinateOutOfRange { at, .. } =
+        &mut error
+    {
+        at.operand = 1 - at.operand;
+    }
     error
 }

@@ -178,12 +178,12 @@ fn errors_name_the_vertex_and_the_app_recovers() {
         app.operation = op;
         let error = app.outcome().as_ref().expect_err("NaN is refused").clone();
         assert_eq!(
-            error.location().operand,
+            error.location().expect("a vertex is named").operand,
             1,
             "{op:?}: Q is operand 1, also when the core swaps it"
         );
         assert_eq!(
-            VertexId::from_location(&app.scene, &error.location()),
+            VertexId::from_location(&app.scene, &error.location().unwrap()),
             Some(bad)
         );
         assert!(

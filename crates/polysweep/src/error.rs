@@ -31,13 +31,20 @@ pub enum Error {
     /// A coordinate's magnitude is outside the range the exact predicates are proven for (see
     /// [`crate::MAX_COORDINATE`] and [`crate::MIN_COORDINATE`]).
     CoordinateOutOfRange { at: Location, value: f64 },
+    /// The sweep would need more than `limit` events (two per input edge, four more per crossing): more than one
+    /// sweep can name with its 32-bit indices. No vertex is to blame; it takes about 100 GB of memory to get here.
+    TooLarge { limit: usize },
 }
 
 impl Error {
-    /// The vertex the error is about.
-    pub fn location(&self) -> Location {
-        let (Error::NonFiniteCoordinate { at, .. } | Error::CoordinateOutOfRange { at, .. }) = self;
-        *at
+    /// The vertex the error is about, if it is about one.
+    pub fn location(&self) -> Option<Location> {
+        match self {
+            Error::NonFiniteCoordinate { at, .. } | Error::CoordinateOutOfRange { at, .. } => {
+                Some(*at)
+            }
+            Error::TooLarge { .. } => None,
+        }
     }
 }
 
@@ -52,6 +59,11 @@ impl fmt::Display for Error {
                 "{at}: coordinate {value:e} is out of range (its magnitude must be 0 or between {:e} and {:e})",
                 crate::MIN_COORDINATE,
                 crate::MAX_COORDINATE
+            ),
+            Error::TooLarge { limit } => write!(
+                f,
+                "the operation needs more than {limit} sweep events (two per edge, four more per crossing), the most \
+                 one sweep can hold"
             ),
         }
     }

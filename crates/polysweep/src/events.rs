@@ -56,9 +56,15 @@ const RECORDED: u32 = 1 << 31;
 const LEFT: u32 = 1 << 31;
 /// The bit of [`SweepEvent::segment_and_side`] that says the other end is the input segment's own endpoint: the
 /// edge has not been split on that side, so its other end's point is read from the input edge, which the sweep
-/// reads anyway, instead of from an event far away in memory. Input segments are fewer than 2^30 (they would take
-/// 40 GiB, and their events twice that, on top).
+/// reads anyway, instead of from an event far away in memory. Input segments are fewer than 2^30 (see
+/// [`MAX_EVENTS`]).
 const OTHER_AT_INPUT_END: u32 = 1 << 30;
+
+/// The most events one sweep holds (an input that needs more is refused, see [`crate::Error::TooLarge`]). Within
+/// it, every index fits where it is kept: an event's id and its node in S are below `RECORDED`, and so are a
+/// vertex's and a result edge's (at most one per event); the input segments, two initial events each, are below
+/// `OTHER_AT_INPUT_END`.
+pub(crate) const MAX_EVENTS: usize = RECORDED as usize - 1;
 
 impl SweepEvent {
     /// Index of the input segment this edge lies on, among the sweep's input edges, which give its line (oriented

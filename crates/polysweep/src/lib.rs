@@ -86,7 +86,7 @@ pub use input::{MAX_COORDINATE, MIN_COORDINATE};
 pub use select::{FillRule, Operation};
 pub use validate::validate;
 
-use events::InputEdge;
+use events::{InputEdge, MAX_EVENTS};
 use input::Bounds;
 use select::Selection;
 
@@ -167,7 +167,7 @@ pub fn overlay_with_stats(
         Bounds::around_all(&subject_boxes),
         Bounds::around_all(&clipping_boxes),
     );
-    Ok(sweep(
+    sweep(
         edges,
         Selection::Pair {
             operation,
@@ -175,7 +175,7 @@ pub fn overlay_with_stats(
         },
         stop_x(operation, &[subject_box, clipping_box]),
         subject_box.around(&clipping_box).magnitude(),
-    ))
+    )
 }
 
 /// Past this x the result can have no edge, so the sweep stops there (the end of the subject for a difference,
@@ -205,9 +205,9 @@ fn sweep(
     selection: Selection,
     stop_x: f64,
     magnitude: f64,
-) -> (MultiPolygon, Stats) {
+) -> Result<(MultiPolygon, Stats), Error> {
     let (mut result, mut stats, mut suspect) =
-        sweep_once(&edges, selection, stop_x, magnitude, MAX_REPAIR_PASSES > 0);
+        sweep_once(&edges, selection, stop_x, magnitude, MAX_REPAIR_PASSES > 0)?;
     stats.input_edges = edges.len();
     while suspect && stats.repair_passes < MAX_REPAIR_PASSES {
         let mut edges = Vec::new();
@@ -218,9 +218,9 @@ fn sweep(
         };
         stats.repair_passes += 1;
         let may_snap = stats.repair_passes < MAX_REPAIR_PASSES;
-        (result, _, suspect) = sweep_once(&edges, repair, f64::INFINITY, magnitude, may_snap);
+        (result, _, suspect) = sweep_once(&edges, repair, f64::INFINITY, magnitude, may_snap)?;
     }
-    (result, stats)
+    Ok((result, stats))
 }
 
 /// One sweep and its rounded result, and whether that result needs a repair pass. `may_snap`: a repair pass may
@@ -232,9 +232,13 @@ fn sweep_once(
     stop_x: f64,
     magnitude: f64,
     may_snap: bool,
-) -> (MultiPolygon, Stats, bool) {
+) -> Result<(MultiPolygon, Stats, bool), Error> {
+    // (Checked before the events are made: their construction counts endpoints in 32 bits.)
+    if 2 * edges.len() > MAX_EVENTS {
+        return Err(Error::TooLarge { limit: MAX_EVENTS });
+    }
     let mut sweep = sweep::Sweep::new(edges, selection, stop_x, magnitude);
-    sweep.run();
+    sweep.run(MAX_EVENTS)?;
     let stats = Stats {
         crossings: sweep.exact.crossing_count(),
         events: sweep.events.len(),
@@ -261,7 +265,7 @@ fn sweep_once(
         |e| events[e as usize].result_edge(),
         &close_pairs,
     );
-    (result, stats, suspect || snapped)
+    Ok((result, stats, suspect || snapped))
 }
 
 /// `subject ∩ clipping` under the even-odd rule.
@@ -341,7 +345,7 @@ fn overlay_refs(
     for (index, operand) in operands.iter().enumerate() {
         let mut own = Vec::new();
         input::add_edges(&mut own, operand, 0, |_| true);
-        let (valid, _) = sweep(own, normalise, f64::INFINITY, boxes[index].magnitude());
+        let (valid, _) = sweep(own, normalise, f64::INFINITY, boxes[index].magnitude())?;
         let slot = u8::from(operation == Operation::Difference && index > 0);
         input::add_edges(&mut edges, &valid, slot, |_| true);
     }
@@ -355,7 +359,7 @@ fn overlay_refs(
         operands: in_slot_0,
     };
     let magnitude = Bounds::around_all(&boxes).magnitude();
-    Ok(sweep(edges, selection, stop_x(operation, &boxes), magnitude).0)
+    Ok(sweep(edges, selection, stop_x(operation, &boxes), magnitude)?.0)
 }
 
 /// The union of all operands.

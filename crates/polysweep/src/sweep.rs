@@ -34,6 +34,7 @@ use crate::events::{
 use crate::exact::{Exact, Line, SweepPoint};
 use crate::geometry::larger;
 use crate::select::{Flags, Selection};
+use crate::Error;
 use std::cmp::Ordering;
 
 /// An edge of the result, oriented with the result on its left.
@@ -153,12 +154,16 @@ impl<'a> Sweep<'a> {
         });
     }
 
-    /// Fig. 5's main loop.
-    pub fn run(&mut self) {
+    /// Fig. 5's main loop. Refuses to go on once there are more than `max_events` events (see [`crate::events::MAX_EVENTS`]; one
+    /// event's processing adds a few at most, so they stay far within what 32-bit ids can name).
+    pub fn run(&mut self, max_events: usize) -> Result<(), Error> {
         while let Some(e) = self
             .queue
             .pop(|a, b| event_order(&self.events, self.edges, &self.exact, a, b))
         {
+            if self.events.len() > max_events {
+                return Err(Error::TooLarge { limit: max_events });
+            }
             let point = self.point(e);
             if self
                 .exact
@@ -176,6 +181,7 @@ impl<'a> Sweep<'a> {
                 self.process_right(e);
             }
         }
+        Ok(())
     }
 
     /// Events come in point order, so equal points are consecutive and share one output vertex.
@@ -459,6 +465,58 @@ impl<'a> Sweep<'a> {
                 !self.strictly_inside(n, &self.current) && self.is_below(next, key) == above
             }
             side => (side == Ordering::Less) == above,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::MultiPolygon;
+    use crate::input::add_edges;
+    use crate::select::{FillRule, Operation};
+
+    #[test]
+    fn a_sweep_that_outgrows_its_limit_stops_with_an_error() {
+        // Five thin bars across five others: 4 crossings per pair of bars, 100 in all, each adding 4 events to
+        // the 80 initial ones.
+        let bar = |x: f64, y: f64, w: f64, h: f64| {
+            vec![vec![[x, y], [x + w, y], [x + w, y + h], [x, y + h]]]
+        };
+        let across = MultiPolygon::from_coordinates(
+            &(0..5)
+                .map(|i| bar(0.0, 2.0 * i as f64, 10.0, 1.0))
+                .collect::<Vec<_>>(),
+        );
+        let up = MultiPolygon::from_coordinates(
+            &(0..5)
+                .map(|i| bar(2.0 * i as f64 + 0.5, -1.0, 1.0, 12.0))
+                .collect::<Vec<_>>(),
+        );
+        let mut edges = Vec::new();
+        add_edges(&mut edges, &across, 0, |_| true);
+        add_edges(&mut edges, &up, 1, |_| true);
+        let selection = Selection::Pair {
+            operation: Operation::Intersection,
+            fill_rule: FillRule::EvenOdd,
+        };
+        let sweep = || Sweep::new(&edges, selection, f64::INFINITY, 12.0);
+        let mut whole = sweep();
+        assert_eq!(whole.run(crate::events::MAX_EVENTS), Ok(()));
+        assert_eq!(
+            (whole.events.len(), whole.exact.crossing_count()),
+            (480, 100)
+        );
+        for limit in [80, 200, 479] {
+            let error = sweep().run(limit).expect_err("more events than the limit");
+            assert_eq!(error, Error::TooLarge { limit });
+            assert_eq!(error.location(), None);
+            assert!(
+                error
+                    .to_string()
+                    .contains(&format!("more than {limit} sweep events")),
+                "{error}"
+            );
         }
     }
 }
