@@ -10,36 +10,86 @@ import { overlay_flat } from './polysweep_wasm.js';
 
 const OPERATIONS = { intersection: 0, union: 1, difference: 2, xor: 3 };
 const FILL_RULES = { evenodd: 0, nonzero: 1 };
+// 2^28 vertices are 4 GiB of coordinates, all of wasm32's memory: no call with more can succeed.
+const MAX_VERTICES = 2 ** 28;
+
+/** `value` for an error message. Never throws, as JSON.stringify does on a BigInt or a cycle. */
+function describe(value) {
+  if (typeof value === 'string') return JSON.stringify(value);
+  if (Array.isArray(value)) return 'an array';
+  if (typeof value === 'object' && value !== null) return 'an object';
+  if (typeof value === 'function') return 'a function';
+  if (typeof value === 'bigint') return `${value}n`;
+  return String(value);
+}
+
+/** Is `key` one of `table`'s own names (not an inherited one such as 'toString', nor a non-string)? */
+const isKeyOf = (table, key) => typeof key === 'string' && Object.hasOwn(table, key);
 
 function isOptions(arg) {
   return arg !== null && typeof arg === 'object' && !Array.isArray(arg) && !('type' in arg);
 }
 
 function fillRuleOf(options) {
+  if (options !== undefined && options !== null && typeof options !== 'object') {
+    throw new TypeError(`options must be an object such as {fillRule: 'nonzero'}, not ${describe(options)}`);
+  }
   const rule = options?.fillRule ?? 'evenodd';
-  if (!(rule in FILL_RULES)) {
-    throw new TypeError(`options.fillRule must be 'evenodd' or 'nonzero', not ${JSON.stringify(rule)}`);
+  if (!isKeyOf(FILL_RULES, rule)) {
+    throw new TypeError(`options.fillRule must be 'evenodd' or 'nonzero', not ${describe(rule)}`);
   }
   return FILL_RULES[rule];
+}
+
+/**
+ * Are these Polygon coordinates (rings of positions) rather than MultiPolygon ones (polygons of rings)? Three
+ * levels down a Polygon has numbers and a MultiPolygon positions; the first of those found decides, so that an
+ * empty ring or a bad first position neither flips the reading nor misplaces the error. (A bounded look: a huge
+ * sparse array must not make this a long loop.)
+ */
+function isPolygonCoordinates(geom) {
+  let budget = 64;
+  for (let i = 0; i < geom.length && budget > 0; i++) {
+    const outer = geom[i];
+    if (!Array.isArray(outer)) continue;
+    for (let j = 0; j < outer.length && budget > 0; j++) {
+      const inner = outer[j];
+      if (!Array.isArray(inner)) continue;
+      for (let k = 0; k < inner.length && budget-- > 0; k++) {
+        if (typeof inner[k] === 'number') return true;
+        if (Array.isArray(inner[k])) return false;
+      }
+    }
+  }
+  return false;
+}
+
+/** The MultiPolygon coordinates of a Polygon or MultiPolygon geometry; `what` names it in errors. */
+function geometryCoordinates(geom, what) {
+  if (geom?.type !== 'Polygon' && geom?.type !== 'MultiPolygon') {
+    const found = geom && typeof geom === 'object' ? `GeoJSON type ${describe(geom.type)}` : describe(geom);
+    throw new TypeError(`${what}: expected a Polygon or MultiPolygon, not ${found}`);
+  }
+  if (!Array.isArray(geom.coordinates)) throw new TypeError(`${what}: the ${geom.type}'s coordinates must be an array`);
+  return geom.type === 'Polygon' ? [geom.coordinates] : geom.coordinates;
 }
 
 /** The MultiPolygon coordinates of one operand, and the GeoJSON kind it came as. */
 function coordinatesOf(geom, operand) {
   if (Array.isArray(geom)) {
-    // Polygon coordinates are rings of positions; MultiPolygon coordinates are polygons of rings.
-    const polygonDepth = Array.isArray(geom[0]?.[0]) && typeof geom[0][0][0] === 'number';
-    return { coordinates: polygonDepth ? [geom] : geom, kind: 'coordinates' };
+    return { coordinates: isPolygonCoordinates(geom) ? [geom] : geom, kind: 'coordinates' };
   }
   if (geom && typeof geom === 'object') {
     if (geom.type === 'Feature') {
-      const inner = coordinatesOf(geom.geometry, operand);
-      return { ...inner, kind: 'feature', properties: geom.properties ?? null };
+      const coordinates = geometryCoordinates(geom.geometry, `operand ${operand}: the feature's geometry`);
+      return { coordinates, kind: 'feature', properties: geom.properties ?? null };
     }
-    if (geom.type === 'Polygon') return { coordinates: [geom.coordinates], kind: 'geometry' };
-    if (geom.type === 'MultiPolygon') return { coordinates: geom.coordinates, kind: 'geometry' };
-    throw new TypeError(`operand ${operand}: unsupported GeoJSON type ${JSON.stringify(geom.type)}; expected Polygon, MultiPolygon or a Feature of one`);
+    if (!('type' in geom) && 'fillRule' in geom) {
+      throw new TypeError(`operand ${operand}: options such as {fillRule} go after the last operand`);
+    }
+    return { coordinates: geometryCoordinates(geom, `operand ${operand}`), kind: 'geometry' };
   }
-  throw new TypeError(`operand ${operand}: expected GeoJSON Polygon or MultiPolygon coordinates, geometry or feature`);
+  throw new TypeError(`operand ${operand}: expected GeoJSON Polygon or MultiPolygon coordinates, geometry or feature, not ${describe(geom)}`);
 }
 
 /** One operand's MultiPolygon coordinates in the flat form, checking their shape on the way. (Plain loops: this
@@ -56,6 +106,9 @@ function toFlat(multiPolygon, o) {
       if (!Array.isArray(ring)) throw new TypeError(`operand ${o}, polygon ${p}, ring ${r}: must be an array of positions`);
       rings++;
       vertices += ring.length;
+      if (vertices > MAX_VERTICES) {
+        throw new RangeError(`operand ${o}, polygon ${p}, ring ${r}: more than ${MAX_VERTICES} vertices, more than wasm memory holds`);
+      }
     }
   }
   const coords = new Float64Array(2 * vertices);
@@ -118,6 +171,17 @@ function run(operation, fillRule, flat) {
     return overlay_flat(operation, fillRule, flat.coords, flat.ringOffsets, flat.polygonOffsets, flat.operandOffsets);
   } catch (error) {
     throw new RangeError(error?.message ?? String(error));
+  }
+}
+
+/** Offsets must run from 0 to `end` without decreasing. */
+function checkOffsets(offsets, end, what, endName) {
+  if (offsets.length === 0 || offsets[0] !== 0 || offsets[offsets.length - 1] !== end) {
+    const found = offsets.length === 0 ? 'it is empty' : `it runs from ${offsets[0]} to ${offsets[offsets.length - 1]}`;
+    throw new RangeError(`${what} must start at 0 and end at ${endName}, ${end}; ${found}`);
+  }
+  for (let k = 1; k < offsets.length; k++) {
+    if (offsets[k] < offsets[k - 1]) throw new RangeError(`${what} decrease at ${k}: ${offsets[k - 1]}, then ${offsets[k]}`);
   }
 }
 
@@ -188,14 +252,22 @@ export function xor(geom, ...geoms) {
  * each ring; ring offsets of each polygon, exterior first), and the result in the same form.
  */
 export function overlayFlat(operation, operands, options) {
-  if (!(operation in OPERATIONS)) {
-    throw new TypeError(`operation must be one of ${Object.keys(OPERATIONS).join(', ')}, not ${JSON.stringify(operation)}`);
+  if (!isKeyOf(OPERATIONS, operation)) {
+    throw new TypeError(`operation must be one of ${Object.keys(OPERATIONS).join(', ')}, not ${describe(operation)}`);
   }
   const fillRule = fillRuleOf(options);
+  if (!Array.isArray(operands)) {
+    throw new TypeError(`operands must be an array of {coords, ringOffsets, polygonOffsets}, not ${describe(operands)}`);
+  }
   operands.forEach((o, i) => {
     if (!(o?.coords instanceof Float64Array) || !(o.ringOffsets instanceof Uint32Array) || !(o.polygonOffsets instanceof Uint32Array)) {
       throw new TypeError(`operand ${i}: expected {coords: Float64Array, ringOffsets: Uint32Array, polygonOffsets: Uint32Array}`);
     }
+    // The operands are concatenated, so offsets that do not start at 0 and end at the count would silently take
+    // in the neighbouring operand's rings or vertices.
+    if (o.coords.length % 2 !== 0) throw new RangeError(`operand ${i}: coords must hold x, y pairs, not ${o.coords.length} numbers`);
+    checkOffsets(o.ringOffsets, o.coords.length / 2, `operand ${i}: ringOffsets`, 'the vertex count (coords.length / 2)');
+    checkOffsets(o.polygonOffsets, o.ringOffsets.length - 1, `operand ${i}: polygonOffsets`, 'the ring count (ringOffsets.length - 1)');
   });
   const packed = run(OPERATIONS[operation], fillRule, concatenate(operands));
   const out = unpack(packed);

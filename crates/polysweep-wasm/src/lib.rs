@@ -27,9 +27,11 @@ fn operands(
             let mut ring_list: Vec<Vec<Point>> = Vec::new();
             for r in span(polygons, p, "polygon")? {
                 let vertices = span(rings, r, "ring")?;
-                let xy = coords
-                    .get(2 * vertices.start..2 * vertices.end)
-                    .ok_or("ring offsets run past the coordinates")?;
+                // Compared as vertex counts before doubling: on wasm32, doubling an offset of 2^31 or more wraps.
+                if vertices.end > coords.len() / 2 {
+                    return Err(format!("ring {r} runs past the coordinates"));
+                }
+                let xy = &coords[2 * vertices.start..2 * vertices.end];
                 ring_list.push(xy.chunks_exact(2).map(|c| Point::new(c[0], c[1])).collect());
             }
             let mut rings = ring_list.into_iter();
@@ -92,13 +94,16 @@ pub fn overlay_flat(
             ))
         }
     };
-    let options = Options {
-        fill_rule: if fill_rule == 1 {
-            FillRule::NonZero
-        } else {
-            FillRule::EvenOdd
-        },
+    let fill_rule = match fill_rule {
+        0 => FillRule::EvenOdd,
+        1 => FillRule::NonZero,
+        _ => {
+            return Err(JsError::new(
+                "fill rule must be 0 (even-odd) or 1 (non-zero)",
+            ))
+        }
     };
+    let options = Options { fill_rule };
     let operands = operands(coords, ring_offsets, polygon_offsets, operand_offsets)
         .map_err(|e| JsError::new(&e))?;
     let result = match &operands[..] {
@@ -130,5 +135,11 @@ mod tests {
         assert_eq!(&packed[5..8], &[0.0, 5.0, 10.0]);
         assert_eq!(packed.len(), 8 + 20);
         assert!(operands(&coords, &[0, 4, 9], &[0, 1, 2], &[0, 1, 2]).is_err());
+        // Offsets whose double wraps around in 32 bits (wasm32's usize) still run past the coordinates.
+        let far = [1 << 31, (1 << 31) + 4];
+        assert_eq!(
+            operands(&coords, &far, &[0, 1], &[0, 1]).err().as_deref(),
+            Some("ring 0 runs past the coordinates")
+        );
     }
 }
