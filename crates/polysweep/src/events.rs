@@ -369,6 +369,12 @@ impl EventQueue {
         }
     }
 
+    /// Empties the queue.
+    pub fn clear(&mut self) {
+        self.next_initial = self.initial;
+        self.heap.clear();
+    }
+
     pub fn push(&mut self, event: EventId, order: impl Fn(EventId, EventId) -> Ordering) {
         self.heap.push(event);
         let mut child = self.heap.len() - 1;

@@ -238,7 +238,7 @@ fn sweep_once(
         return Err(Error::TooLarge { limit: MAX_EVENTS });
     }
     let mut sweep = sweep::Sweep::new(edges, selection, stop_x, magnitude);
-    sweep.run(MAX_EVENTS)?;
+    sweep.run()?;
     let stats = Stats {
         crossings: sweep.exact.crossing_count(),
         events: sweep.events.len(),

@@ -112,6 +112,9 @@ impl Sweep<'_> {
     /// Fig. 6: splits the edge of left event `edge`, which is in S, at `p`, which lies on it strictly between its
     /// endpoints.
     pub(crate) fn split(&mut self, edge: EventId, p: SweepPoint) {
+        if !self.room_for_split() {
+            return;
+        }
         let base = self.event(edge).clone();
         let right = base.other;
         let (new_right, new_left) = (

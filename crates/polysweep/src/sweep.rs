@@ -29,7 +29,7 @@
 
 use crate::events::{
     event_order, far_point, initial_events, EventId, EventQueue, InputEdge, Operand, SweepEvent,
-    NONE,
+    MAX_EVENTS, NONE,
 };
 use crate::exact::{Exact, Line, SweepPoint};
 use crate::geometry::larger;
@@ -98,6 +98,10 @@ pub(crate) struct Sweep<'a> {
     /// The clearance of the largest magnitude of the input's coordinates, which bounds every point's (crossings
     /// lie between input vertices): edges farther than this from a point need no closer look.
     widest_clearance: f64,
+    /// The most events this sweep may make: [`MAX_EVENTS`], within which every index fits its 32 bits (smaller in
+    /// tests). A split that would pass it stops the sweep with [`Error::TooLarge`] (see `room_for_split`).
+    pub max_events: usize,
+    stopped: bool,
 }
 
 impl<'a> Sweep<'a> {
@@ -127,6 +131,8 @@ impl<'a> Sweep<'a> {
             close_call: false,
             close_pairs: Vec::new(),
             widest_clearance: crate::connect::clearance(magnitude),
+            max_events: MAX_EVENTS,
+            stopped: false,
         }
     }
 
@@ -148,22 +154,22 @@ impl<'a> Sweep<'a> {
         &self.edges[self.event(e).segment() as usize]
     }
 
+    /// Puts event `e` in Q, unless the sweep has been stopped (see [`Self::max_events`]).
     pub fn push(&mut self, e: EventId) {
+        if self.stopped {
+            return;
+        }
         self.queue.push(e, |a, b| {
             event_order(&self.events, self.edges, &self.exact, a, b)
         });
     }
 
-    /// Fig. 5's main loop. Refuses to go on once there are more than `max_events` events (see [`crate::events::MAX_EVENTS`]; one
-    /// event's processing adds a few at most, so they stay far within what 32-bit ids can name).
-    pub fn run(&mut self, max_events: usize) -> Result<(), Error> {
+    /// Fig. 5's main loop.
+    pub fn run(&mut self) -> Result<(), Error> {
         while let Some(e) = self
             .queue
             .pop(|a, b| event_order(&self.events, self.edges, &self.exact, a, b))
         {
-            if self.events.len() > max_events {
-                return Err(Error::TooLarge { limit: max_events });
-            }
             let point = self.point(e);
             if self
                 .exact
@@ -181,7 +187,22 @@ impl<'a> Sweep<'a> {
                 self.process_right(e);
             }
         }
+        if self.stopped {
+            return Err(Error::TooLarge {
+                limit: self.max_events,
+            });
+        }
         Ok(())
+    }
+
+    /// Can a split add two more events? If not, the sweep stops: Q is emptied and nothing more is put in it, so
+    /// the loop ends once the event at hand is done (the status left as it is, and no result made).
+    pub fn room_for_split(&mut self) -> bool {
+        if self.events.len() + 2 > self.max_events {
+            self.stopped = true;
+            self.queue.clear();
+        }
+        !self.stopped
     }
 
     /// Events come in point order, so equal points are consecutive and share one output vertex.
@@ -502,13 +523,16 @@ mod tests {
         };
         let sweep = || Sweep::new(&edges, selection, f64::INFINITY, 12.0);
         let mut whole = sweep();
-        assert_eq!(whole.run(crate::events::MAX_EVENTS), Ok(()));
+        assert_eq!(whole.run(), Ok(()));
         assert_eq!(
             (whole.events.len(), whole.exact.crossing_count()),
             (480, 100)
         );
         for limit in [80, 200, 479] {
-            let error = sweep().run(limit).expect_err("more events than the limit");
+            let mut limited = sweep();
+            limited.max_events = limit;
+            let error = limited.run().expect_err("more events than the limit");
+            assert!(limited.events.len() <= limit);
             assert_eq!(error, Error::TooLarge { limit });
             assert_eq!(error.location(), None);
             assert!(
