@@ -101,6 +101,7 @@ pub(crate) struct Sweep<'a> {
     /// The most events this sweep may make: [`MAX_EVENTS`], within which every index fits its 32 bits (smaller in
     /// tests). A split that would pass it stops the sweep with [`Error::TooLarge`] (see `room_for_split`).
     pub max_events: usize,
+    /// A split found no room under `max_events`: Q has been emptied and stays empty.
     stopped: bool,
 }
 
