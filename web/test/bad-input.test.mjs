@@ -73,15 +73,12 @@ function assertStillWorks() {
  * (an error whose message matches), or {ifThrows: RegExp} (either; an error's message must match). Says if it threw.
  */
 function check(name, call, expect) {
-  const started = performance.now();
   let result, error;
   try {
     result = call();
   } catch (thrown) {
     error = thrown;
   }
-  // A true hang blocks the run; this at least catches a call that is pathologically slow.
-  assert.ok(performance.now() - started < 2000, `${name}: took ${performance.now() - started} ms`);
   if (error === undefined) {
     assert.ok(!(expect instanceof RegExp), `${name}: returned instead of throwing ${expect}`);
     const coordinates = coordinatesOf(result);
@@ -195,6 +192,7 @@ const HAND_CASES = [
   ].map(([name, changes]) => [`flat ${name}`, () => overlayFlat('union', [flatSquare(0, 0), { ...flatSquare(1, 1), ...changes }, flatSquare(9, 9)]), /operand 1\b/]),
 ];
 
+// No timed assertions (these machines are noisy): a call that hangs blocks the run, which CI's time limit fails.
 test(`${HAND_CASES.length} hand-written bad inputs`, () => {
   for (const [name, call, expect] of HAND_CASES) check(name, call, expect);
 });
