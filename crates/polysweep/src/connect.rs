@@ -520,9 +520,8 @@ fn snap_points(
             continue;
         }
         let line = &input[e.segment as usize].line;
-        let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
+        let ([dx, dy], cross) = line.float_offset([p.x, p.y]);
         let (hx, hy) = (ulp(p.x) / 2.0, ulp(p.y) / 2.0);
-        let cross = (p.x - line.a[0]) * dy - (p.y - line.a[1]) * dx;
         // A line meets a box when its offset from the centre is at most the box's reach across it.
         if cross.abs() > hx * dy.abs() + hy * dx.abs() {
             continue;

@@ -216,6 +216,15 @@ impl Line {
     pub fn is_vertical(&self) -> bool {
         self.a[0] == self.b[0]
     }
+
+    /// The line's direction `b - a`, and the cross product `(p - a) × (b - a)`: `p`'s offset from the line times
+    /// the direction's length. In floats, for the tests of how near rounding brings a point to a line, which decide
+    /// no predicate (the exact side of a line is [`Exact::orient`]).
+    #[inline(always)]
+    pub fn float_offset(&self, p: [f64; 2]) -> ([f64; 2], f64) {
+        let (dx, dy) = (self.b[0] - self.a[0], self.b[1] - self.a[1]);
+        ([dx, dy], (p[0] - self.a[0]) * dy - (p[1] - self.a[1]) * dx)
+    }
 }
 
 /// A point of the sweep: an input vertex, or the exact crossing of two input segments' lines.

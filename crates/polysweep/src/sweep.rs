@@ -284,8 +284,7 @@ impl<'a> Sweep<'a> {
             right: b,
             ..
         } = *self.status.key(node);
-        let (dx, dy) = (line.b[0] - line.a[0], line.b[1] - line.a[1]);
-        let cross = (p.approx[0] - line.a[0]) * dy - (p.approx[1] - line.a[1]) * dx;
+        let ([dx, dy], cross) = line.float_offset(p.approx);
         // distance = |cross| / |d|, compared squared to avoid the square root.
         let within = |clearance: f64| cross * cross <= clearance * clearance * (dx * dx + dy * dy);
         if !within(self.widest_clearance) {
