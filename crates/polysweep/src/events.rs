@@ -15,6 +15,7 @@
 //!   vertices' points by value, not through their ids), and the sweep then reads the events front to back.
 
 use crate::exact::{Exact, Line, SweepPoint};
+use crate::workspace::{take, Workspace};
 use std::cmp::Ordering;
 
 mod sort;
@@ -236,8 +237,13 @@ pub(crate) fn event_order(
 /// sorted as one: half as many keys as endpoints. Input points are exact floats, so they are sorted by x as integer
 /// keys that order like the coordinates, by value (see [`sort`]); those with one x, which then come out
 /// next to each other, are sorted again by y, and the endpoints at one point by [`order_at_point`]. The sort moves
-/// small keys and reads the compact edges, never the larger events.
-pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEvent> {
+/// small keys and reads the compact edges, never the larger events. Its vectors are `workspace`'s, and so is the
+/// vector of the events returned.
+pub(crate) fn initial_events(
+    edges: &[InputEdge],
+    exact: &Exact,
+    workspace: &mut Workspace,
+) -> Vec<SweepEvent> {
     // An endpoint is `2 · edge + 1` for a left endpoint, `2 · edge` for a right one.
     let point = |end: u32| {
         let line = &edges[end as usize / 2].line;
@@ -261,7 +267,9 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
     // The endpoint where edge `j` begins along its ring (it ends at the other one).
     let begin = |j: usize| 2 * j as u32 + u32::from(edges[j].winding > 0);
     // A vertex's key (its x, as an integer that orders like it) and its two endpoints (or one and `NONE`).
-    let mut vertices: Vec<(u64, [u32; 2])> = Vec::with_capacity(edges.len() + 1);
+    let vertices = &mut workspace.keys;
+    vertices.clear();
+    vertices.reserve(edges.len() + 1);
     let mut vertex = |ends: [u32; 2]| vertices.push((ordered_bits(point(ends[0])[0]), ends));
     let mut chain_start = 0; // the first edge of the current chain of edges meeting end to beginning
     for j in 0..edges.len() {
@@ -281,8 +289,10 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
         chain_start = j + 1;
     }
     // Keys that tie are ordered again below.
-    sort::sort_by_key(&mut vertices);
-    let mut order: Vec<u32> = Vec::with_capacity(2 * edges.len());
+    sort::sort_by_key(vertices, &mut workspace.sorted_keys, &mut workspace.buckets);
+    let order = &mut workspace.order;
+    order.clear();
+    order.reserve(2 * edges.len());
     let mut at_one_point = Vec::new();
     for same_x in vertices.chunk_by_mut(|a, b| a.0 == b.0) {
         if same_x.len() > 1 {
@@ -327,14 +337,17 @@ pub(crate) fn initial_events(edges: &[InputEdge], exact: &Exact) -> Vec<SweepEve
             order.extend_from_slice(&at_one_point);
         }
     }
-    let mut position = vec![0 as EventId; order.len()];
+    let position = &mut workspace.position;
+    position.clear();
+    position.resize(order.len(), 0);
     for (i, &end) in order.iter().enumerate() {
         position[end as usize] = i as EventId;
     }
     // Room for a quarter as many events again from subdivision before the vector has to move (and be copied):
     // Table 1's workloads add from 0.6% (land × 8 squares) to 12.6% (× 8,192, which outgrew an eighth). Room
     // never used costs address space, not memory: its pages are never touched.
-    let mut events = Vec::with_capacity(order.len() + order.len() / 4);
+    let mut events = take(&mut workspace.events);
+    events.reserve(order.len() + order.len() / 4);
     events.extend(order.iter().map(|&end| {
         let segment = end / 2;
         let other = position[end as usize ^ 1];
@@ -477,7 +490,7 @@ mod tests {
         add_edges(&mut edges, &subject, 0, |_| true);
         add_edges(&mut edges, &clipping, 1, |_| true);
         let exact = Exact::default();
-        let events = initial_events(&edges, &exact);
+        let events = initial_events(&edges, &exact, &mut Default::default());
         assert_eq!(events.len(), 2 * edges.len());
         for i in 1..events.len() as EventId {
             assert_eq!(

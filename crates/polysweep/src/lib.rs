@@ -37,6 +37,12 @@
 //! Vertices where the boundary goes straight on (from the input, or where an edge of the other operand ended)
 //! are kept.
 //!
+//! ## Memory
+//! Each thread keeps the working memory of its last operation (its largest vectors, emptied) for the next one, up
+//! to [`workspace::KEEP_BYTES`]: memory fresh from the system costs a page fault per page on first use, which made
+//! up a fifth of the time of an operation on Table 1's data (see [`workspace`]). [`free_working_memory`] gives it
+//! back.
+//!
 //! ## The algorithm, stage by stage
 //! [`events`] (§3, Fig. 8, the order of §4) → [`status`] (§3, §7.1) → [`subdivide`] (Fig. 6, §7.2, §7.3) →
 //! [`select`] (§4, Fig. 9, Fig. 10) → [`connect`] (§5), driven by [`sweep`] (Fig. 5) with the predicates of
@@ -55,6 +61,7 @@ pub mod status;
 pub mod subdivide;
 pub mod sweep;
 pub mod validate;
+pub mod workspace;
 
 /// Seeded random numbers for the unit tests (xorshift): reproducible, and no dependency.
 #[cfg(test)]
@@ -85,10 +92,12 @@ pub use geometry::{ring_area, MultiPolygon, Point, Polygon, Ring};
 pub use input::{MAX_COORDINATE, MIN_COORDINATE};
 pub use select::{FillRule, Operation};
 pub use validate::validate;
+pub use workspace::free_working_memory;
 
 use events::{InputEdge, MAX_EVENTS};
 use input::Bounds;
 use select::Selection;
+use workspace::Workspace;
 
 /// Options of an operation.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -128,6 +137,16 @@ pub fn overlay_with_stats(
     clipping: &MultiPolygon,
     options: &Options,
 ) -> Result<(MultiPolygon, Stats), Error> {
+    workspace::with(|workspace| overlay_pair(operation, subject, clipping, options, workspace))
+}
+
+fn overlay_pair(
+    operation: Operation,
+    subject: &MultiPolygon,
+    clipping: &MultiPolygon,
+    options: &Options,
+    workspace: &mut Workspace,
+) -> Result<(MultiPolygon, Stats), Error> {
     let (subject_boxes, clipping_boxes) = (input::check(0, subject)?, input::check(1, clipping)?);
     // An intersection lies where polygons of both operands are, and a difference where the subject's are: a polygon
     // whose box meets no polygon's box of the other operand cannot change the result and is not swept. (Not in the
@@ -136,7 +155,10 @@ pub fn overlay_with_stats(
     // a ring's winding number is 0 outside its box, so wherever the result can lie the operand's interior, under
     // either fill rule, is that of the polygons kept.
     let keep_all = |_: usize| true;
-    let (mut edges, polygons) = (Vec::new(), subject.0.len() + clipping.0.len());
+    let (mut edges, polygons) = (
+        workspace::take(&mut workspace.edges),
+        subject.0.len() + clipping.0.len(),
+    );
     // About as many cells as polygons.
     let cells = (polygons as f64).sqrt().ceil().clamp(1.0, 1024.0) as usize;
     let meeting = |boxes: &[Bounds], other: &[Bounds]| {
@@ -175,6 +197,7 @@ pub fn overlay_with_stats(
         },
         stop_x(operation, &[subject_box, clipping_box]),
         subject_box.around(&clipping_box).magnitude(),
+        workspace,
     )
 }
 
@@ -199,18 +222,25 @@ const MAX_REPAIR_PASSES: usize = 4;
 
 /// The sweep of Fig. 5 over `edges`, whose coordinates are of magnitude `magnitude` at most, then the result
 /// rounded to f64 and, where rounding may have broken it, repaired by sweeping it again (see the robustness page;
-/// the result lies within the edges' box, so within the same magnitude).
+/// the result lies within the edges' box, so within the same magnitude). `edges` is given to `workspace` once done.
 fn sweep(
-    edges: Vec<InputEdge>,
+    mut edges: Vec<InputEdge>,
     selection: Selection,
     stop_x: f64,
     magnitude: f64,
+    workspace: &mut Workspace,
 ) -> Result<(MultiPolygon, Stats), Error> {
-    let (mut result, mut stats, mut suspect) =
-        sweep_once(&edges, selection, stop_x, magnitude, MAX_REPAIR_PASSES > 0)?;
+    let (mut result, mut stats, mut suspect) = sweep_once(
+        &edges,
+        selection,
+        stop_x,
+        magnitude,
+        MAX_REPAIR_PASSES > 0,
+        workspace,
+    )?;
     stats.input_edges = edges.len();
     while suspect && stats.repair_passes < MAX_REPAIR_PASSES {
-        let mut edges = Vec::new();
+        edges.clear();
         input::add_edges(&mut edges, &result, 0, |_| true);
         let repair = Selection::Count {
             operation: Operation::Union,
@@ -218,8 +248,16 @@ fn sweep(
         };
         stats.repair_passes += 1;
         let may_snap = stats.repair_passes < MAX_REPAIR_PASSES;
-        (result, _, suspect) = sweep_once(&edges, repair, f64::INFINITY, magnitude, may_snap)?;
+        (result, _, suspect) = sweep_once(
+            &edges,
+            repair,
+            f64::INFINITY,
+            magnitude,
+            may_snap,
+            workspace,
+        )?;
     }
+    workspace.edges = edges;
     Ok((result, stats))
 }
 
@@ -232,12 +270,13 @@ fn sweep_once(
     stop_x: f64,
     magnitude: f64,
     may_snap: bool,
+    workspace: &mut Workspace,
 ) -> Result<(MultiPolygon, Stats, bool), Error> {
     // (Checked before the events are made: their construction counts endpoints in 32 bits.)
     if 2 * edges.len() > MAX_EVENTS {
         return Err(Error::TooLarge { limit: MAX_EVENTS });
     }
-    let mut sweep = sweep::Sweep::new(edges, selection, stop_x, magnitude);
+    let mut sweep = sweep::Sweep::new(edges, selection, stop_x, magnitude, workspace);
     sweep.run()?;
     let stats = Stats {
         crossings: sweep.exact.crossing_count(),
@@ -265,6 +304,7 @@ fn sweep_once(
         |e| events[e as usize].result_edge(),
         &close_pairs,
     );
+    sweep.give_back(workspace);
     Ok((result, stats, suspect || snapped))
 }
 
@@ -330,6 +370,15 @@ fn overlay_refs(
     operands: &[&MultiPolygon],
     options: &Options,
 ) -> Result<MultiPolygon, Error> {
+    workspace::with(|workspace| overlay_many(operation, operands, options, workspace))
+}
+
+fn overlay_many(
+    operation: Operation,
+    operands: &[&MultiPolygon],
+    options: &Options,
+    workspace: &mut Workspace,
+) -> Result<MultiPolygon, Error> {
     let mut boxes = Vec::with_capacity(operands.len());
     for (index, operand) in operands.iter().enumerate() {
         boxes.push(Bounds::around_all(&input::check(index, operand)?));
@@ -343,9 +392,10 @@ fn overlay_refs(
     };
     let mut edges = Vec::new();
     for (index, operand) in operands.iter().enumerate() {
-        let mut own = Vec::new();
+        let mut own = workspace::take(&mut workspace.edges);
         input::add_edges(&mut own, operand, 0, |_| true);
-        let (valid, _) = sweep(own, normalise, f64::INFINITY, boxes[index].magnitude())?;
+        let magnitude = boxes[index].magnitude();
+        let (valid, _) = sweep(own, normalise, f64::INFINITY, magnitude, workspace)?;
         let slot = u8::from(operation == Operation::Difference && index > 0);
         input::add_edges(&mut edges, &valid, slot, |_| true);
     }
@@ -359,7 +409,14 @@ fn overlay_refs(
         operands: in_slot_0,
     };
     let magnitude = Bounds::around_all(&boxes).magnitude();
-    Ok(sweep(edges, selection, stop_x(operation, &boxes), magnitude)?.0)
+    Ok(sweep(
+        edges,
+        selection,
+        stop_x(operation, &boxes),
+        magnitude,
+        workspace,
+    )?
+    .0)
 }
 
 /// The union of all operands.

@@ -34,6 +34,7 @@ use crate::events::{
 use crate::exact::{Exact, Line, SweepPoint};
 use crate::geometry::larger;
 use crate::select::{Flags, Selection};
+use crate::workspace::{take, Workspace};
 use crate::Error;
 use std::cmp::Ordering;
 
@@ -106,16 +107,25 @@ pub(crate) struct Sweep<'a> {
 }
 
 impl<'a> Sweep<'a> {
-    /// A sweep of `edges`, all within coordinates of magnitude `magnitude`.
-    pub fn new(edges: &'a [InputEdge], selection: Selection, stop_x: f64, magnitude: f64) -> Self {
+    /// A sweep of `edges`, all within coordinates of magnitude `magnitude`. Its vectors are `workspace`'s (see
+    /// [`Self::give_back`]).
+    pub fn new(
+        edges: &'a [InputEdge],
+        selection: Selection,
+        stop_x: f64,
+        magnitude: f64,
+        workspace: &mut Workspace,
+    ) -> Self {
         let exact = Exact::default();
-        let events = initial_events(edges, &exact);
+        let events = initial_events(edges, &exact, workspace);
         let queue = EventQueue::new(events.len());
         // Every vertex has two events at least (a ring vertex two, a crossing four): room for as many vertices as
         // the events have room for, and for a result edge per input edge (a union of polygons apart keeps them
         // all), so that these vectors seldom move.
-        let vertices = Vec::with_capacity(events.capacity() / 2);
-        let result = Vec::with_capacity(events.len() / 2);
+        let mut vertices = take(&mut workspace.vertices);
+        vertices.reserve(events.len() / 2 + events.len() / 8);
+        let mut result = take(&mut workspace.result);
+        result.reserve(events.len() / 2);
         Sweep {
             edges,
             events,
@@ -135,6 +145,12 @@ impl<'a> Sweep<'a> {
             max_events: MAX_EVENTS,
             stopped: false,
         }
+    }
+
+    /// Gives this sweep's vectors back to `workspace`, for the next sweep.
+    pub fn give_back(self, workspace: &mut Workspace) {
+        (workspace.events, workspace.vertices, workspace.result) =
+            (self.events, self.vertices, self.result);
     }
 
     pub fn event(&self, e: EventId) -> &SweepEvent {
@@ -521,7 +537,15 @@ mod tests {
             operation: Operation::Intersection,
             fill_rule: FillRule::EvenOdd,
         };
-        let sweep = || Sweep::new(&edges, selection, f64::INFINITY, 12.0);
+        let sweep = || {
+            Sweep::new(
+                &edges,
+                selection,
+                f64::INFINITY,
+                12.0,
+                &mut Default::default(),
+            )
+        };
         let mut whole = sweep();
         assert_eq!(whole.run(), Ok(()));
         assert_eq!(

@@ -32,8 +32,13 @@ fn value(key: u64) -> f64 {
 /// A key's bucket is its value's place between the smallest and the largest, scaled to the number of buckets and
 /// rounded down. Every step of that (a subtraction, a product with a positive factor, rounding down) is monotone
 /// in floating point too, so a smaller key never lands in a later bucket, and sorting each bucket sorts them all.
-/// Each item is an integer that orders like a coordinate, and what it stands for.
-pub(crate) fn sort_by_key<T: Copy + Default>(items: &mut Vec<(u64, T)>) {
+/// Each item is an integer that orders like a coordinate, and what it stands for. `spare` and `bucket_of_item` are working
+/// memory (see [`crate::workspace`]): what they hold is overwritten.
+pub(crate) fn sort_by_key<T: Copy + Default>(
+    items: &mut Vec<(u64, T)>,
+    spare: &mut Vec<(u64, T)>,
+    bucket_of_item: &mut Vec<u32>,
+) {
     let (Some(low), Some(high)) = (
         items.iter().map(|&(key, _)| key).min(),
         items.iter().map(|&(key, _)| key).max(),
@@ -51,19 +56,21 @@ pub(crate) fn sort_by_key<T: Copy + Default>(items: &mut Vec<(u64, T)>) {
     // `starts[b]`: where bucket `b` begins in the sorted order, once summed up.
     let mut starts = vec![0u32; buckets + 1];
     // Each item's bucket, worked out once for the count and the move.
-    let of_item: Vec<u32> = (items.iter())
-        .map(|&(key, _)| {
-            let b = bucket(key);
-            starts[b + 1] += 1;
-            b as u32
-        })
-        .collect();
+    let of_item = bucket_of_item;
+    of_item.clear();
+    of_item.extend(items.iter().map(|&(key, _)| {
+        let b = bucket(key);
+        starts[b + 1] += 1;
+        b as u32
+    }));
     for b in 1..=buckets {
         starts[b] += starts[b - 1];
     }
-    let mut sorted = vec![(0, T::default()); items.len()];
+    let sorted = spare;
+    sorted.clear();
+    sorted.resize(items.len(), (0, T::default()));
     let mut next = starts.clone();
-    for (&item, &b) in items.iter().zip(&of_item) {
+    for (&item, &b) in items.iter().zip(of_item.iter()) {
         let slot = &mut next[b as usize];
         sorted[*slot as usize] = item;
         *slot += 1;
@@ -73,7 +80,7 @@ pub(crate) fn sort_by_key<T: Copy + Default>(items: &mut Vec<(u64, T)>) {
             sorted[range[0] as usize..range[1] as usize].sort_unstable_by_key(|&(key, _)| key);
         }
     }
-    *items = sorted;
+    std::mem::swap(items, sorted);
 }
 
 #[cfg(test)]
@@ -132,7 +139,7 @@ mod tests {
                 .map(|(i, &v)| (ordered_bits(v), i as u32))
                 .collect();
             let mut expected = items.clone();
-            sort_by_key(&mut items);
+            sort_by_key(&mut items, &mut Vec::new(), &mut Vec::new());
             expected.sort_unstable_by_key(|&(key, _)| key);
             let keys = |items: &[(u64, u32)]| items.iter().map(|&(key, _)| key).collect::<Vec<_>>();
             assert_eq!(keys(&items), keys(&expected), "{} values", values.len());
