@@ -17,6 +17,7 @@
 use crate::exact::{Exact, Line, SweepPoint};
 use crate::workspace::{take, Workspace};
 use std::cmp::Ordering;
+use std::hint::select_unpredictable;
 
 mod sort;
 
@@ -83,7 +84,7 @@ impl SweepEvent {
     pub fn initial(edge: &InputEdge, segment: u32, left: bool, other: EventId) -> Self {
         let mut winding = [0; 2];
         winding[edge.operand as usize] = edge.winding;
-        let point = SweepPoint::input(if left { edge.line.a } else { edge.line.b });
+        let point = SweepPoint::input(select_unpredictable(left, edge.line.a, edge.line.b));
         let mut event = Self::unprocessed(point, left, segment, winding, other);
         event.segment_and_side |= OTHER_AT_INPUT_END;
         event
@@ -305,25 +306,25 @@ pub(crate) fn initial_events(
         for same_point in same_x.chunk_by(|a, b| a.0 == b.0) {
             if let [(_, ends)] = same_point {
                 // The usual case, one vertex at its point: its two endpoints in order, without a sort.
-                let mut ends = *ends;
+                let ends = *ends;
                 if ends[1] == NONE {
                     order.push(ends[0]);
                     continue;
                 }
                 // Where the ring goes on through the vertex (one edge ends, the next begins), the right endpoint
-                // comes first (§4): the lines need not be read.
-                let second_first = match (ends[0] % 2, ends[1] % 2) {
-                    (1, 0) => true,
-                    (0, 1) => false,
-                    _ => {
-                        order_at_point(exact, &at_point(ends[1]), &at_point(ends[0]))
-                            == Ordering::Less
-                    }
+                // comes first (§4): the lines need not be read. Which one that is, is a coin toss in x order: the
+                // pair is put in order by a selection, not a branch.
+                let (first_left, second_left) = (ends[0] % 2 == 1, ends[1] % 2 == 1);
+                let second_first = if first_left != second_left {
+                    first_left
+                } else {
+                    order_at_point(exact, &at_point(ends[1]), &at_point(ends[0])) == Ordering::Less
                 };
-                if second_first {
-                    ends.swap(0, 1);
-                }
-                order.extend(ends);
+                let (a, b) = (ends[0], ends[1]);
+                order.extend([
+                    select_unpredictable(second_first, b, a),
+                    select_unpredictable(second_first, a, b),
+                ]);
                 continue;
             }
             at_one_point.clear();

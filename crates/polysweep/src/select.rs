@@ -18,6 +18,7 @@
 //! left side (that coverage plus its winding).
 
 use crate::events::{EventId, NONE};
+use std::hint::select_unpredictable;
 
 /// A Boolean operation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -109,8 +110,12 @@ impl Selection {
     ) -> Flags {
         let (coverage_below, result_below) = match below {
             None => ([0; 2], NONE),
-            Some((b, flags, false)) if flags.in_result => (flags.coverage_above, b),
-            Some((_, flags, _)) => (flags.coverage_above, flags.result_below),
+            // The closest non-vertical result edge below: the edge below, or the one it names. (A selection, not a
+            // branch: whether the edge below is in the result is a coin toss.)
+            Some((b, flags, b_vertical)) => (
+                flags.coverage_above,
+                select_unpredictable(flags.in_result & !b_vertical, b, flags.result_below),
+            ),
         };
         let crossed = [
             coverage_below[0] + winding[0],
