@@ -82,7 +82,7 @@ impl Bounds {
     };
 
     /// The box of one point.
-    fn at(p: &Point) -> Bounds {
+    pub fn at(p: &Point) -> Bounds {
         Bounds {
             min: [p.x, p.y],
             max: [p.x, p.y],
@@ -112,6 +112,11 @@ impl Bounds {
         self.max[0]
     }
 
+    /// The smallest coordinate on axis `k` (0: x, 1: y).
+    pub fn min(&self, k: usize) -> f64 {
+        self.min[k]
+    }
+
     /// The largest magnitude of a coordinate in the box (0 for an empty box): every point the sweep makes from
     /// edges within the box lies within it, crossings included.
     pub fn magnitude(&self) -> f64 {
@@ -124,29 +129,27 @@ impl Bounds {
     pub fn meets(&self, other: &Bounds) -> bool {
         (0..2).all(|k| self.min[k] <= other.max[k] && other.min[k] <= self.max[k])
     }
+
+    /// Does this box lie within `other`?
+    pub fn within(&self, other: &Bounds) -> bool {
+        (0..2).all(|k| other.min[k] <= self.min[k] && self.max[k] <= other.max[k])
+    }
 }
 
-/// Which cells of a grid some box of a set touches: tells in constant time whether another box may meet a box of
-/// the set. Its "no" is exact, so a polygon it rules out can be left out of the sweep (see `overlay_with_stats`);
-/// its "yes" may be wrong by a cell.
-///
-/// A coordinate's cell is its place between the set's smallest and largest, scaled to the number of cells and
-/// rounded down (clamped at the ends): monotone in floating point, so two boxes with a common point both touch that
-/// point's cell. The cells touched are counted with a difference table, one update per box whatever its size, and
-/// then summed into a table of rectangle sums, so that the cost is linear in the boxes and cells.
-pub(crate) struct Coverage {
-    region: Bounds,
-    cells: usize,
+/// A grid of `cells` × `cells` over a region. A coordinate's cell is its place between the region's smallest and
+/// largest, scaled to the number of cells and rounded down (clamped at the ends): monotone in floating point, so a
+/// point of a box lies in a cell of the box's range, and two boxes with a common point both touch that point's cell.
+#[derive(Clone, Copy)]
+pub(crate) struct Grid {
+    pub region: Bounds,
+    pub cells: usize,
     scale: [f64; 2],
-    /// `touched[r · (cells + 1) + c]`: how many cells of rows below `r` and columns left of `c` some box touches.
-    touched: Vec<u32>,
 }
 
-impl Coverage {
-    /// The coverage of `boxes` on a grid of `cells` × `cells` (one at least).
-    pub fn new(boxes: &[Bounds], cells: usize) -> Self {
+impl Grid {
+    /// A grid of `cells` × `cells` (one at least) over `region`.
+    pub fn new(region: Bounds, cells: usize) -> Self {
         let cells = cells.max(1);
-        let region = Bounds::around_all(boxes);
         let scale = [0, 1].map(|k| {
             let extent = region.max[k] - region.min[k];
             if extent > 0.0 {
@@ -155,67 +158,118 @@ impl Coverage {
                 0.0
             }
         });
-        let mut coverage = Coverage {
+        Grid {
             region,
             cells,
             scale,
-            touched: vec![0; (cells + 1) * (cells + 1)],
-        };
-        // How many boxes cover each cell, by a difference table: +1 at a box's first cell, -1 past its last.
-        let width = cells + 1;
-        let mut count = vec![0i32; width * width];
-        for b in boxes.iter().filter(|b| b.meets(&region)) {
-            let [[c0, c1], [r0, r1]] = coverage.range(b);
-            count[r0 * width + c0] += 1;
-            count[r0 * width + c1 + 1] -= 1;
-            count[(r1 + 1) * width + c0] -= 1;
-            count[(r1 + 1) * width + c1 + 1] += 1;
         }
-        // Summed along rows and then along columns, the differences give each cell's count; the cells with any
-        // are summed again into the rectangle sums, shifted by one row and one column.
-        for row in count.chunks_exact_mut(width).take(cells) {
+    }
+
+    /// Cells per unit of length along axis `k` (0 when the region has no extent along it).
+    pub fn scale(&self, k: usize) -> f64 {
+        self.scale[k]
+    }
+
+    /// The column (`k` = 0) or row (`k` = 1) of coordinate `v`. (Rounding down a negative or NaN place gives 0.)
+    pub fn cell(&self, v: f64, k: usize) -> usize {
+        (((v - self.region.min[k]) * self.scale[k]) as usize).min(self.cells - 1)
+    }
+
+    /// The first and last column and row that box `b` touches.
+    pub fn range(&self, b: &Bounds) -> [[usize; 2]; 2] {
+        [0, 1].map(|k| [self.cell(b.min[k], k), self.cell(b.max[k], k)])
+    }
+
+    /// A difference table for counting how many cell ranges touch each cell: add each range (see [`Self::range`])
+    /// with [`Self::count_range`], one update whatever its size, then [`Self::counts`].
+    pub fn difference_table(&self) -> Vec<i32> {
+        vec![0; (self.cells + 1) * (self.cells + 1)]
+    }
+
+    pub fn count_range(&self, table: &mut [i32], [[c0, c1], [r0, r1]]: [[usize; 2]; 2]) {
+        let width = self.cells + 1;
+        table[r0 * width + c0] += 1;
+        table[r0 * width + c1 + 1] -= 1;
+        table[(r1 + 1) * width + c0] -= 1;
+        table[(r1 + 1) * width + c1 + 1] += 1;
+    }
+
+    /// How many ranges touch each cell (row by row): the difference table summed along rows and columns.
+    pub fn counts(&self, mut table: Vec<i32>) -> Vec<i32> {
+        let width = self.cells + 1;
+        for row in table.chunks_exact_mut(width) {
             let mut sum = 0;
-            for v in &mut row[..cells] {
+            for v in row.iter_mut() {
                 sum += *v;
                 *v = sum;
             }
         }
-        for r in 1..cells {
-            let (above, row) = count.split_at_mut(r * width);
-            for (v, a) in row[..cells].iter_mut().zip(&above[(r - 1) * width..]) {
+        for r in 1..self.cells {
+            let (above, row) = table.split_at_mut(r * width);
+            for (v, a) in row.iter_mut().zip(&above[(r - 1) * width..]) {
                 *v += a;
             }
         }
-        for (r, row) in count.chunks_exact(width).take(cells).enumerate() {
-            let (below, this) = coverage.touched.split_at_mut((r + 1) * width);
+        (table.chunks_exact(width).take(self.cells))
+            .flat_map(|row| &row[..self.cells])
+            .copied()
+            .collect()
+    }
+
+    /// The rectangle sums of the cells that `marked` (given a row and a column) marks: entry `r · (cells + 1) + c` counts the
+    /// marked cells of rows below `r` and columns left of `c` (see [`Self::marked_in`]).
+    pub fn rectangle_sums(&self, marked: impl Fn(usize, usize) -> bool) -> Vec<u32> {
+        let (n, width) = (self.cells, self.cells + 1);
+        let mut sums = vec![0u32; width * width];
+        for r in 0..n {
+            let (below, this) = sums.split_at_mut((r + 1) * width);
             let below = &below[r * width..];
             let mut in_row = 0;
-            for c in 0..cells {
-                in_row += u32::from(row[c] > 0);
+            for c in 0..n {
+                in_row += u32::from(marked(r, c));
                 this[c + 1] = below[c + 1] + in_row;
             }
         }
-        coverage
+        sums
     }
 
-    /// The first and last column and row that box `b` touches.
-    fn range(&self, b: &Bounds) -> [[usize; 2]; 2] {
-        // (Rounding down a negative or NaN place gives 0.)
-        let cell = |v: f64, k: usize| {
-            (((v - self.region.min[k]) * self.scale[k]) as usize).min(self.cells - 1)
-        };
-        [0, 1].map(|k| [cell(b.min[k], k), cell(b.max[k], k)])
+    /// How many marked cells, by `sums` (see [`Self::rectangle_sums`]), lie in the cells that box `b` touches.
+    pub fn marked_in(&self, sums: &[u32], b: &Bounds) -> u32 {
+        let [[c0, c1], [r0, r1]] = self.range(b);
+        let width = self.cells + 1;
+        sums[(r1 + 1) * width + c1 + 1] + sums[r0 * width + c0]
+            - sums[r0 * width + c1 + 1]
+            - sums[(r1 + 1) * width + c0]
+    }
+}
+
+/// Which cells of a grid some box of a set touches: tells in constant time whether another box may meet a box of
+/// the set. Its "no" is exact, so a polygon it rules out can be left out of the sweep (see `overlay_with_stats`);
+/// its "yes" may be wrong by a cell.
+pub(crate) struct Coverage {
+    grid: Grid,
+    /// The rectangle sums of the cells that some box touches.
+    touched: Vec<u32>,
+}
+
+impl Coverage {
+    /// The coverage of `boxes` on a grid of `cells` × `cells` (one at least).
+    pub fn new(boxes: &[Bounds], cells: usize) -> Self {
+        let grid = Grid::new(Bounds::around_all(boxes), cells);
+        let mut table = grid.difference_table();
+        for b in boxes.iter().filter(|b| b.meets(&grid.region)) {
+            grid.count_range(&mut table, grid.range(b));
+        }
+        let count = grid.counts(table);
+        Coverage {
+            grid,
+            touched: grid.rectangle_sums(|r, c| count[r * grid.cells + c] > 0),
+        }
     }
 
     /// Could `b` meet one of the boxes? `false` only if it meets none.
     pub fn may_meet(&self, b: &Bounds) -> bool {
-        if !b.meets(&self.region) {
-            return false;
-        }
-        let [[c0, c1], [r0, r1]] = self.range(b);
-        let (t, width) = (&self.touched, self.cells + 1);
-        t[(r1 + 1) * width + c1 + 1] + t[r0 * width + c0]
-            > t[r0 * width + c1 + 1] + t[(r1 + 1) * width + c0]
+        b.meets(&self.grid.region) && self.grid.marked_in(&self.touched, b) > 0
     }
 }
 
@@ -287,7 +341,7 @@ mod tests {
                 let may_meet = coverage.may_meet(&b);
                 assert!(may_meet || !meets, "{b:?} meets one of {boxes:?}");
                 // Those within the set's box, which the cells have to tell apart.
-                if !meets && b.meets(&coverage.region) {
+                if !meets && b.meets(&coverage.grid.region) {
                     apart += 1;
                     ruled_out += usize::from(!may_meet);
                 }

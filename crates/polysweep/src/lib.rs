@@ -56,6 +56,7 @@ pub mod exact;
 pub mod geojson;
 pub mod geometry;
 pub mod input;
+pub mod prune;
 pub mod select;
 pub mod status;
 pub mod subdivide;
@@ -168,19 +169,56 @@ fn overlay_pair(
             .map(|b| coverage.may_meet(b))
             .collect::<Vec<bool>>()
     };
+    // A clipping polygon wholly outside the subject, away from its edges, cannot change an intersection or a
+    // difference, nor one wholly inside it a union (see `prune`; judged by the whole subject, before any of it is
+    // left out). The subject's polygons are then judged by the boxes of the clipping polygons kept.
+    let away_from_subject = |inside: bool| {
+        // The grid costs about a pass over the subject's vertices: it can pay only when the clipping operand is not
+        // much smaller, in many polygons. It has about four cells per clipping polygon, as pruning needs cells
+        // smaller than the polygons it leaves out, and no more cells than the subject has vertices.
+        let subject_vertices = subject.vertex_count();
+        if clipping.0.len() < MIN_POLYGONS_TO_PRUNE
+            || 2 * clipping.vertex_count() < subject_vertices
+        {
+            return vec![false; clipping.0.len()];
+        }
+        let cells = (4 * clipping.0.len()).min(subject_vertices) as f64;
+        let cells = cells.sqrt().ceil().clamp(1.0, 1024.0) as usize;
+        let known = prune::KnownWinding::new(subject, Bounds::around_all(&subject_boxes), cells);
+        (clipping_boxes.iter())
+            .map(|b| {
+                known
+                    .throughout(b)
+                    .is_some_and(|w| options.fill_rule.is_inside(w) == inside)
+            })
+            .collect::<Vec<bool>>()
+    };
+    let kept_boxes = |boxes: &[Bounds], left_out: &[bool]| {
+        (boxes.iter().zip(left_out))
+            .filter(|&(_, &out)| !out)
+            .map(|(b, _)| *b)
+            .collect::<Vec<Bounds>>()
+    };
     match operation {
         Operation::Intersection => {
-            let kept = meeting(&subject_boxes, &clipping_boxes);
+            let outside = away_from_subject(false);
+            let kept = meeting(&subject_boxes, &kept_boxes(&clipping_boxes, &outside));
             input::add_edges(&mut edges, subject, 0, |p| kept[p]);
             let kept = meeting(&clipping_boxes, &subject_boxes);
-            input::add_edges(&mut edges, clipping, 1, |p| kept[p]);
+            input::add_edges(&mut edges, clipping, 1, |p| kept[p] && !outside[p]);
         }
         Operation::Difference => {
             input::add_edges(&mut edges, subject, 0, keep_all);
+            let outside = away_from_subject(false);
             let kept = meeting(&clipping_boxes, &subject_boxes);
-            input::add_edges(&mut edges, clipping, 1, |p| kept[p]);
+            input::add_edges(&mut edges, clipping, 1, |p| kept[p] && !outside[p]);
         }
-        Operation::Union | Operation::Xor => {
+        Operation::Union => {
+            input::add_edges(&mut edges, subject, 0, keep_all);
+            let inside = away_from_subject(true);
+            input::add_edges(&mut edges, clipping, 1, |p| !inside[p]);
+        }
+        Operation::Xor => {
             input::add_edges(&mut edges, subject, 0, keep_all);
             input::add_edges(&mut edges, clipping, 1, keep_all);
         }
@@ -200,6 +238,10 @@ fn overlay_pair(
         workspace,
     )
 }
+
+/// Fewer clipping polygons than this are not judged by the subject's winding number (see `prune`): each would have
+/// to lie within a cell of a grid of a few cells, away from all of the subject's edges, to be left out.
+const MIN_POLYGONS_TO_PRUNE: usize = 16;
 
 /// Past this x the result can have no edge, so the sweep stops there (the end of the subject for a difference,
 /// of the operand that ends first for an intersection), given the box of every operand.

@@ -149,6 +149,26 @@ proptest! {
         check_membership(&a, &b, &samples(5, 1.0, 0.0), FillRule::NonZero)?;
     }
 
+    /// Many small squares as the clipping operand, enough polygons and vertices to be judged by the subject's
+    /// winding number away from its edges (and some left out, see `prune`), against random rings under either
+    /// fill rule. Each square covers one sample point; its sides lie well apart from the samples.
+    #[test]
+    fn membership_with_many_small_clipping_squares(
+        a in grid_operand(10),
+        at in prop::collection::vec((0i32..=10, 0i32..=10), 16..=60),
+        non_zero in any::<bool>(),
+    ) {
+        let squares: Vec<Vec<Vec<[f64; 2]>>> = (at.iter())
+            .map(|&(i, j)| {
+                let (x, y) = (f64::from(i) + 0.5, f64::from(j) + 0.5);
+                vec![vec![[x, y], [x + 0.75, y], [x + 0.75, y + 0.75], [x, y + 0.75]]]
+            })
+            .collect();
+        let (a, b) = (operand(a, 1.0, 0.0), MultiPolygon::from_coordinates(&squares));
+        let fill_rule = if non_zero { FillRule::NonZero } else { FillRule::EvenOdd };
+        check_membership(&a, &b, &samples(10, 1.0, 0.0), fill_rule)?;
+    }
+
     #[test]
     fn membership_with_coordinates_near_1e_minus_9(a in grid_operand(8), b in grid_operand(8)) {
         // 2^-30 ≈ 0.93e-9: the grid stays exactly representable, so the topology is the integer grid's.

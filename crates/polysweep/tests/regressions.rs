@@ -81,12 +81,25 @@ fn polygons_apart_from_the_other_operand_are_left_out() {
     };
     let subject = boxes(&[[10.0, 90.0, 1.0], [50.0, 50.0, 2.0]]);
     let clipping = boxes(&[[0.0, 0.0, 1.0], [100.0, 100.0, 1.0], [51.0, 51.0, 2.0]]);
-    let options = Options::default();
-    for (operation, area, edges) in [
-        (Operation::Intersection, 1.0, 8),
-        (Operation::Difference, 4.0, 12),
-    ] {
-        let (result, stats) = overlay_with_stats(operation, &subject, &clipping, &options).unwrap();
+    assert_area_and_edges_swept(
+        &subject,
+        &clipping,
+        &[
+            (Operation::Intersection, 1.0, 8),
+            (Operation::Difference, 4.0, 12),
+        ],
+    );
+}
+
+/// Each operation's result has the area expected and is valid, and the sweep took the number of edges expected.
+fn assert_area_and_edges_swept(
+    subject: &MultiPolygon,
+    clipping: &MultiPolygon,
+    expected: &[(Operation, f64, usize)],
+) {
+    for &(operation, area, edges) in expected {
+        let options = Options::default();
+        let (result, stats) = overlay_with_stats(operation, subject, clipping, &options).unwrap();
         assert_eq!(
             (result.area(), stats.input_edges),
             (area, edges),
@@ -94,6 +107,61 @@ fn polygons_apart_from_the_other_operand_are_left_out() {
         );
         assert!(polysweep::validate(&result).is_ok());
     }
+}
+
+/// A clipping polygon wholly outside the subject and away from its edges is left out of an intersection and a
+/// difference, and one wholly inside it out of a union. Subject: [0, 100]² (each side cut into 100 edges) with the
+/// hole [40, 60]² (each side cut into 25): 500 edges. Clipping: 100 squares of side 2 at (10i + 4, 10j + 4), i and
+/// j from 0 to 9. The subject's winding number is known on a grid of 20 × 20 cells of side 5 (four cells per
+/// clipping square, fewer than the subject's vertices), in the cells that no edge touches: not in the outermost
+/// rows and columns (the square's sides) nor where the hole's sides run (columns and rows 8 and 12, from 8 to 12).
+/// Square (i, j) covers columns 2i and 2i + 1 and rows 2j and 2j + 1, so, worked out by hand:
+/// - known inside: i and j from 1 to 8 but not both from 4 to 6: 64 − 9 = 55 squares;
+/// - known outside: (5, 5), in the hole, away from its sides: 1 square;
+/// - in the hole: (4, 4), (4, 5), (5, 4) and (5, 5), so 96 squares inside.
+///
+/// Expected: intersection 96 · 4 = 384 and difference 10,000 − 400 − 384 = 9,216, each from 500 + 99 · 4 = 896
+/// edges; union 9,600 + 4 · 4 = 9,616, from 500 + 45 · 4 = 680 edges.
+#[test]
+fn clipping_polygons_wholly_inside_or_outside_the_subject_are_left_out() {
+    let cut_square = |x: f64, side: f64, pieces: u32| {
+        let corners = [
+            [x, x],
+            [x + side, x],
+            [x + side, x + side],
+            [x, x + side],
+            [x, x],
+        ];
+        (corners.windows(2))
+            .flat_map(|w| {
+                (0..pieces).map(move |i| {
+                    [0, 1].map(|k| w[0][k] + (w[1][k] - w[0][k]) * f64::from(i) / f64::from(pieces))
+                })
+            })
+            .collect::<Vec<[f64; 2]>>()
+    };
+    let mut hole = cut_square(40.0, 20.0, 25);
+    hole.reverse();
+    let subject = MultiPolygon::from_coordinates(&[vec![cut_square(0.0, 100.0, 100), hole]]);
+    let squares: Vec<Vec<Vec<[f64; 2]>>> = (0..100)
+        .map(|n| {
+            let (x, y) = (
+                f64::from(n % 10) * 10.0 + 4.0,
+                f64::from(n / 10) * 10.0 + 4.0,
+            );
+            vec![vec![[x, y], [x + 2.0, y], [x + 2.0, y + 2.0], [x, y + 2.0]]]
+        })
+        .collect();
+    let clipping = MultiPolygon::from_coordinates(&squares);
+    assert_area_and_edges_swept(
+        &subject,
+        &clipping,
+        &[
+            (Operation::Intersection, 384.0, 896),
+            (Operation::Difference, 9216.0, 896),
+            (Operation::Union, 9616.0, 680),
+        ],
+    );
 }
 
 /// Found by the property test of n-ary operations (with a seed other than CI's). Operand 1's two triangles cross at
