@@ -229,14 +229,7 @@ pub(crate) fn rounding_may_matter(vertices: &[SweepPoint]) -> bool {
                 return (start..end).any(near_in_y);
             }
             if runs.is_empty() {
-                runs = (0..vertices.len())
-                    .filter(|&j| {
-                        j == 0
-                            || coordinate(j, 0) != coordinate(j - 1, 0)
-                            || coordinate(j, 1) < coordinate(j - 1, 1)
-                    })
-                    .chain([vertices.len()])
-                    .collect();
+                runs = run_starts(vertices);
             }
             let first_run = runs.partition_point(|&r| r <= start) - 1;
             runs[first_run..]
@@ -250,6 +243,22 @@ pub(crate) fn rounding_may_matter(vertices: &[SweepPoint]) -> bool {
                     (below..above).any(near_in_y)
                 })
         })
+}
+
+/// Where each run of `vertices` (not empty) of one x in y order begins, a new x or y going down, and then where the
+/// last one ends. One pass writes every index and moves on past a run's start only: no branch per vertex, which
+/// no predictor could guess.
+fn run_starts(vertices: &[SweepPoint]) -> Vec<usize> {
+    let mut starts = vec![0; vertices.len() + 1];
+    let mut count = 1; // the first vertex begins a run
+    for (j, pair) in vertices.windows(2).enumerate() {
+        let ([x0, y0], [x1, y1]) = (pair[0].approx, pair[1].approx);
+        starts[count] = j + 1;
+        count += usize::from((x1 != x0) | (y1 < y0));
+    }
+    starts[count] = vertices.len();
+    starts.truncate(count + 1);
+    starts
 }
 
 /// The range of `vertices` (in sweep order, so by x) whose x lies within `dx` of vertex `i`'s. It holds `i`; it is
@@ -542,6 +551,21 @@ fn snap_points(
 mod tests {
     use super::*;
     use crate::exact::Line;
+
+    #[test]
+    fn runs_of_one_x_in_y_order() {
+        let points = [
+            [0.0, 0.0],
+            [0.0, 1.0],
+            [0.0, 0.5],
+            [1.0, 0.0],
+            [1.0, 2.0],
+            [2.0, 2.0],
+        ];
+        let vertices: Vec<SweepPoint> = points.iter().map(|&p| SweepPoint::input(p)).collect();
+        assert_eq!(run_starts(&vertices), [0, 2, 3, 5, 6]);
+        assert_eq!(run_starts(&vertices[..1]), [0, 1]);
+    }
 
     #[test]
     fn exact_points_that_round_to_one_point_become_one_vertex() {

@@ -109,8 +109,10 @@ pub struct Options {
 /// What an operation did, for display and benchmarks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Stats {
-    /// Edges swept: those of all operands, less zero-length ones and, for an intersection or a difference, those of
-    /// polygons whose box meets no polygon's box of the other operand.
+    /// Edges swept: those of all operands, less zero-length ones and those of the polygons left out: for an
+    /// intersection or a difference, polygons whose box meets no polygon's box of the other operand, and clipping
+    /// polygons wholly outside the subject away from its edges; for a union, clipping polygons wholly inside it
+    /// (see [`prune`]).
     pub input_edges: usize,
     /// Points where two edges properly cross (constructed intersection points).
     pub crossings: usize,
