@@ -44,6 +44,10 @@ impl KnownWinding {
             })
             .collect();
         let (mut touches, mut winding) = (grid.difference_table(), vec![0i32; n * n]);
+        // Each edge takes a step per row it spans. Edges spanning many rows (a comb's long teeth) could make that
+        // up to 1,024 steps each: past a few per vertex the grid gives up and knows nothing, so the pass stays
+        // linear in the subject's vertices and cells.
+        let (budget, mut steps) = (4 * operand.vertex_count() + n, 0);
         for ring in operand.0.iter().flat_map(|p| p.rings()) {
             let ring = &ring[..open_len(ring)];
             let Some(&last) = ring.last() else { continue };
@@ -59,6 +63,14 @@ impl KnownWinding {
                 if counted != Some([[c0, c1], [r0, r1]]) {
                     grid.count_range(&mut touches, [[c0, c1], [r0, r1]]);
                     counted = Some([[c0, c1], [r0, r1]]);
+                }
+                steps += r1 - r0 + 1;
+                if steps > budget {
+                    return KnownWinding {
+                        grid,
+                        winding: Vec::new(),
+                        unknown: grid.rectangle_sums(|_, _| true),
+                    };
                 }
                 // Where the edge crosses a row's line, it adds its direction to the cells right of its right
                 // end's column: differences along each row, summed below.
@@ -172,6 +184,30 @@ mod tests {
         assert_eq!(at(200.0, 200.0, 5.0), Some(0), "apart from the operand");
         assert_eq!(at(35.0, 35.0, 10.0), None, "across the hole's edge");
         assert_eq!(at(-20.0, 50.0, 30.0), None, "partly outside the region");
+    }
+
+    /// A square [0, 100]² around a comb of 40 teeth that span nearly every row: on a grid of 100 rows the teeth's
+    /// steps exceed the budget and the grid knows nothing (but that boxes apart from the region are outside); on
+    /// one of 4 rows it knows the square's inside away from the comb.
+    #[test]
+    fn gives_up_on_edges_spanning_many_rows() {
+        let mut comb = vec![[1.0, 1.0]];
+        for tooth in 0..40 {
+            let x = 1.0 + f64::from(tooth) * 0.2;
+            comb.extend([[x, 99.0], [x + 0.1, 99.0], [x + 0.1, 1.0], [x + 0.2, 1.0]]);
+        }
+        comb.extend([[9.0, 0.5], [1.0, 0.5]]);
+        let square = vec![[0.0, 0.0], [100.0, 0.0], [100.0, 100.0], [0.0, 100.0]];
+        let operand = MultiPolygon::from_coordinates(&[vec![square], vec![comb]]);
+        let b = Bounds::at(&Point::new(50.0, 50.0)).around(&Bounds::at(&Point::new(51.0, 51.0)));
+        let known = KnownWinding::new(&operand, region_of(&operand), 100);
+        assert_eq!(known.throughout(&b), None);
+        assert_eq!(
+            known.throughout(&Bounds::at(&Point::new(300.0, 50.0))),
+            Some(0)
+        );
+        let known = KnownWinding::new(&operand, region_of(&operand), 4);
+        assert_eq!(known.throughout(&b), Some(1));
     }
 
     /// Wherever it knows the winding number of random polygons, it is right at random points of the box.
