@@ -147,6 +147,11 @@ pub(crate) struct Grid {
 }
 
 impl Grid {
+    /// The side of a square grid of about `cells` cells in all: one at least, 1,024 at most.
+    pub fn side_for(cells: usize) -> usize {
+        (cells as f64).sqrt().ceil().clamp(1.0, 1024.0) as usize
+    }
+
     /// A grid of `cells` × `cells` (one at least) over `region`.
     pub fn new(region: Bounds, cells: usize) -> Self {
         let cells = cells.max(1);
@@ -197,13 +202,7 @@ impl Grid {
     /// How many ranges touch each cell (row by row): the difference table summed along rows and columns.
     pub fn counts(&self, mut table: Vec<i32>) -> Vec<i32> {
         let width = self.cells + 1;
-        for row in table.chunks_exact_mut(width) {
-            let mut sum = 0;
-            for v in row.iter_mut() {
-                sum += *v;
-                *v = sum;
-            }
-        }
+        table.chunks_exact_mut(width).for_each(running_sums);
         for r in 1..self.cells {
             let (above, row) = table.split_at_mut(r * width);
             for (v, a) in row.iter_mut().zip(&above[(r - 1) * width..]) {
@@ -216,8 +215,8 @@ impl Grid {
             .collect()
     }
 
-    /// The rectangle sums of the cells that `marked` (given a row and a column) marks: entry `r · (cells + 1) + c` counts the
-    /// marked cells of rows below `r` and columns left of `c` (see [`Self::marked_in`]).
+    /// The rectangle sums of the cells that `marked` (given a row and a column) marks: entry `r · (cells + 1) + c`
+    /// counts the marked cells of rows below `r` and columns left of `c` (see [`Self::marked_in`]).
     pub fn rectangle_sums(&self, marked: impl Fn(usize, usize) -> bool) -> Vec<u32> {
         let (n, width) = (self.cells, self.cells + 1);
         let mut sums = vec![0u32; width * width];
@@ -240,6 +239,15 @@ impl Grid {
         sums[(r1 + 1) * width + c1 + 1] + sums[r0 * width + c0]
             - sums[r0 * width + c1 + 1]
             - sums[(r1 + 1) * width + c0]
+    }
+}
+
+/// Replaces each value of `row` by the sum of it and those before it.
+pub(crate) fn running_sums(row: &mut [i32]) {
+    let mut sum = 0;
+    for v in row {
+        sum += *v;
+        *v = sum;
     }
 }
 

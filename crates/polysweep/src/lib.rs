@@ -163,7 +163,7 @@ fn overlay_pair(
         subject.0.len() + clipping.0.len(),
     );
     // About as many cells as polygons.
-    let cells = (polygons as f64).sqrt().ceil().clamp(1.0, 1024.0) as usize;
+    let cells = input::Grid::side_for(polygons);
     let meeting = |boxes: &[Bounds], other: &[Bounds]| {
         let coverage = input::Coverage::new(other, cells);
         boxes
@@ -184,8 +184,7 @@ fn overlay_pair(
         {
             return vec![false; clipping.0.len()];
         }
-        let cells = (4 * clipping.0.len()).min(subject_vertices) as f64;
-        let cells = cells.sqrt().ceil().clamp(1.0, 1024.0) as usize;
+        let cells = input::Grid::side_for((4 * clipping.0.len()).min(subject_vertices));
         let known = prune::KnownWinding::new(subject, Bounds::around_all(&subject_boxes), cells);
         (clipping_boxes.iter())
             .map(|b| {
@@ -195,16 +194,14 @@ fn overlay_pair(
             })
             .collect::<Vec<bool>>()
     };
-    let kept_boxes = |boxes: &[Bounds], left_out: &[bool]| {
-        (boxes.iter().zip(left_out))
-            .filter(|&(_, &out)| !out)
-            .map(|(b, _)| *b)
-            .collect::<Vec<Bounds>>()
-    };
     match operation {
         Operation::Intersection => {
             let outside = away_from_subject(false);
-            let kept = meeting(&subject_boxes, &kept_boxes(&clipping_boxes, &outside));
+            let clipping_kept: Vec<Bounds> = (clipping_boxes.iter().zip(&outside))
+                .filter(|&(_, &out)| !out)
+                .map(|(b, _)| *b)
+                .collect();
+            let kept = meeting(&subject_boxes, &clipping_kept);
             input::add_edges(&mut edges, subject, 0, |p| kept[p]);
             let kept = meeting(&clipping_boxes, &subject_boxes);
             input::add_edges(&mut edges, clipping, 1, |p| kept[p] && !outside[p]);

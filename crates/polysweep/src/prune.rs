@@ -2,7 +2,7 @@
 //!
 //! Where no edge of an operand passes, its winding number cannot change: a clipping polygon whose box lies in such
 //! a place and outside the subject cannot change an intersection or a difference, and one inside it cannot change
-//! a union, so it is left out of the sweep (see `overlay_with_stats`). This is what makes clipping a coastline
+//! a union, so it is left out of the sweep (see `overlay_pair`). This is what makes clipping a coastline
 //! with a grid of tiles cost little more than the tiles that meet the coast: at land × 32,768 squares, most
 //! squares are out at sea.
 //!
@@ -20,7 +20,7 @@
 //! polygon's box.
 
 use crate::geometry::{open_len, MultiPolygon, Point};
-use crate::input::{Bounds, Grid};
+use crate::input::{running_sums, Bounds, Grid};
 
 /// The winding number of an operand's rings, known on the cells of a grid that no edge of theirs touches.
 pub(crate) struct KnownWinding {
@@ -84,13 +84,7 @@ impl KnownWinding {
             }
         }
         let touches = grid.counts(touches);
-        for row in winding.chunks_exact_mut(n) {
-            let mut sum = 0;
-            for w in row {
-                sum += *w;
-                *w = sum;
-            }
-        }
+        winding.chunks_exact_mut(n).for_each(running_sums);
         let unknown = grid.rectangle_sums(|r, c| lines[r].is_none() || touches[r * n + c] > 0);
         KnownWinding {
             grid,

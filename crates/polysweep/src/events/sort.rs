@@ -32,8 +32,8 @@ fn value(key: u64) -> f64 {
 /// A key's bucket is its value's place between the smallest and the largest, scaled to the number of buckets and
 /// rounded down. Every step of that (a subtraction, a product with a positive factor, rounding down) is monotone
 /// in floating point too, so a smaller key never lands in a later bucket, and sorting each bucket sorts them all.
-/// Each item is an integer that orders like a coordinate, and what it stands for. `spare` and `bucket_of_item` are working
-/// memory (see [`crate::workspace`]): what they hold is overwritten.
+/// Each item is an integer that orders like a coordinate, and what it stands for. `spare` and `bucket_of_item` are
+/// working memory (see [`crate::workspace`]): what they hold is overwritten.
 pub(crate) fn sort_by_key<T: Copy + Default>(
     items: &mut Vec<(u64, T)>,
     spare: &mut Vec<(u64, T)>,
