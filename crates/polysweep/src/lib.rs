@@ -111,7 +111,8 @@ pub struct Options {
 pub struct Stats {
     /// Edges swept: those of all operands, less zero-length ones and those of the polygons left out: for an
     /// intersection or a difference, polygons whose box meets no polygon's box of the other operand, and clipping
-    /// polygons wholly outside the subject away from its edges; for a union, clipping polygons wholly inside it
+    /// polygons wholly outside the subject away from its edges; for an intersection also those copied to the
+    /// result, wholly inside the subject and apart from the others; for a union, clipping polygons wholly inside it
     /// (see [`prune`]).
     pub input_edges: usize,
     /// Points where two edges properly cross (constructed intersection points).
@@ -172,9 +173,10 @@ fn overlay_pair(
             .collect::<Vec<bool>>()
     };
     // A clipping polygon wholly outside the subject, away from its edges, cannot change an intersection or a
-    // difference, nor one wholly inside it a union (see `prune`; judged by the whole subject, before any of it is
-    // left out). The subject's polygons are then judged by the boxes of the clipping polygons kept.
-    let away_from_subject = |inside: bool| {
+    // difference, nor one wholly inside it a union; an intersection copies one wholly inside it and apart from the
+    // others to its result (see `prune`; judged by the whole subject, before any of it is left out). The subject's
+    // polygons are then judged by the boxes of the clipping polygons swept.
+    let subject_winding = || -> Vec<Option<i32>> {
         // The grid costs about a pass over the subject's vertices: it can pay only when the clipping operand is not
         // much smaller, in many polygons. It has about four cells per clipping polygon, as pruning needs cells
         // smaller than the polygons it leaves out, and no more cells than the subject has vertices.
@@ -182,39 +184,54 @@ fn overlay_pair(
         if clipping.0.len() < MIN_POLYGONS_TO_PRUNE
             || 2 * clipping.vertex_count() < subject_vertices
         {
-            return vec![false; clipping.0.len()];
+            return vec![None; clipping.0.len()];
         }
         let cells = input::Grid::side_for((4 * clipping.0.len()).min(subject_vertices));
         let known = prune::KnownWinding::new(subject, Bounds::around_all(&subject_boxes), cells);
-        (clipping_boxes.iter())
-            .map(|b| {
-                known
-                    .throughout(b)
-                    .is_some_and(|w| options.fill_rule.is_inside(w) == inside)
-            })
-            .collect::<Vec<bool>>()
+        clipping_boxes.iter().map(|b| known.throughout(b)).collect()
     };
+    // The clipping polygons throughout whose box the subject's winding number is known, and inside it or not as
+    // `inside` says.
+    let known_as = |winding: &[Option<i32>], inside: bool| -> Vec<bool> {
+        (winding.iter())
+            .map(|w| w.is_some_and(|w| options.fill_rule.is_inside(w) == inside))
+            .collect()
+    };
+    let (subject_box, clipping_box) = (
+        Bounds::around_all(&subject_boxes),
+        Bounds::around_all(&clipping_boxes),
+    );
+    let magnitude = subject_box.around(&clipping_box).magnitude();
+    // The clipping polygons that an intersection copies to its result instead of sweeping them (see `prune`).
+    let mut copies = Vec::new();
     match operation {
         Operation::Intersection => {
-            let outside = away_from_subject(false);
-            let clipping_kept: Vec<Bounds> = (clipping_boxes.iter().zip(&outside))
-                .filter(|&(_, &out)| !out)
-                .map(|(b, _)| *b)
+            let winding = subject_winding();
+            let outside = known_as(&winding, false);
+            // (Farther apart than rounding moves anything, twice over.)
+            let margin = 2.0 * connect::clearance(magnitude);
+            let copied;
+            (copied, copies) =
+                prune::copied_whole(clipping, &clipping_boxes, &known_as(&winding, true), margin);
+            let swept = |p: usize| !outside[p] && !copied[p];
+            let clipping_kept: Vec<Bounds> = (0..clipping.0.len())
+                .filter(|&p| swept(p))
+                .map(|p| clipping_boxes[p])
                 .collect();
             let kept = meeting(&subject_boxes, &clipping_kept);
             input::add_edges(&mut edges, subject, 0, |p| kept[p]);
             let kept = meeting(&clipping_boxes, &subject_boxes);
-            input::add_edges(&mut edges, clipping, 1, |p| kept[p] && !outside[p]);
+            input::add_edges(&mut edges, clipping, 1, |p| kept[p] && swept(p));
         }
         Operation::Difference => {
             input::add_edges(&mut edges, subject, 0, keep_all);
-            let outside = away_from_subject(false);
+            let outside = known_as(&subject_winding(), false);
             let kept = meeting(&clipping_boxes, &subject_boxes);
             input::add_edges(&mut edges, clipping, 1, |p| kept[p] && !outside[p]);
         }
         Operation::Union => {
             input::add_edges(&mut edges, subject, 0, keep_all);
-            let inside = away_from_subject(true);
+            let inside = known_as(&subject_winding(), true);
             input::add_edges(&mut edges, clipping, 1, |p| !inside[p]);
         }
         Operation::Xor => {
@@ -222,20 +239,18 @@ fn overlay_pair(
             input::add_edges(&mut edges, clipping, 1, keep_all);
         }
     }
-    let (subject_box, clipping_box) = (
-        Bounds::around_all(&subject_boxes),
-        Bounds::around_all(&clipping_boxes),
-    );
-    sweep(
+    let (mut result, stats) = sweep(
         edges,
         Selection::Pair {
             operation,
             fill_rule: options.fill_rule,
         },
         stop_x(operation, &[subject_box, clipping_box]),
-        subject_box.around(&clipping_box).magnitude(),
+        magnitude,
         workspace,
-    )
+    )?;
+    result.0.append(&mut copies);
+    Ok((result, stats))
 }
 
 /// Fewer clipping polygons than this are not judged by the subject's winding number (see `prune`): each would have

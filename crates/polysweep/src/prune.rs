@@ -4,7 +4,9 @@
 //! a place and outside the subject cannot change an intersection or a difference, and one inside it cannot change
 //! a union, so it is left out of the sweep (see `overlay_pair`). This is what makes clipping a coastline
 //! with a grid of tiles cost little more than the tiles that meet the coast: at land × 32,768 squares, most
-//! squares are out at sea.
+//! squares are out at sea. Of those inside, an intersection copies to its result the ones it can tell are their
+//! own part of it, simple rings apart from the other tiles (see [`copied_whole`]): at 32,768 squares, 8,510 of
+//! them, and 34,040 edges fewer to sweep.
 //!
 //! [`KnownWinding`] finds the winding number of all the places at once, on a grid (see [`Grid`]):
 //! - a cell that no edge's box touches has no edge in it, so one winding number holds in all of it, and in all of a
@@ -17,10 +19,13 @@
 //! It decides nothing by rounding: the cells are chosen by a monotone float function, and every comparison is
 //! between input coordinates. Leaving out only polygons of the clipping operand, judged by the whole subject, keeps
 //! it exact together with the pruning by boxes: a subject polygon that pruning leaves out meets no clipping
-//! polygon's box.
+//! polygon's box that is swept. (One that meets only copied ones is covered by the copies where they are, and
+//! changes nothing elsewhere.)
 
-use crate::geometry::{open_len, MultiPolygon, Point};
+use crate::geometry::{open_len, MultiPolygon, Point, Polygon, Ring};
 use crate::input::{running_sums, Bounds, Grid};
+use crate::validate::{lexicographic, simple_ring_turn};
+use std::cmp::Ordering;
 
 /// The winding number of an operand's rings, known on the cells of a grid that no edge of theirs touches.
 pub(crate) struct KnownWinding {
@@ -105,6 +110,111 @@ impl KnownWinding {
         let [[c, _], [r, _]] = self.grid.range(b);
         Some(self.winding[r * self.grid.cells + c])
     }
+}
+
+/// The most vertices of a clipping polygon that an intersection copies whole (see [`copied_whole`]): its ring is
+/// checked against itself pair of edges by pair of edges.
+const MAX_VERTICES_TO_COPY: usize = 32;
+
+/// The clipping polygons that an intersection copies to its result as they are, instead of sweeping them, and
+/// their copies as result polygons. Copied is a polygon that is one simple ring of a few vertices, that `inside`
+/// says lies wholly inside the subject, away from the subject's edges, and whose box is farther
+/// than `margin` from every other clipping polygon's box (`boxes`). There the clipping operand is that ring alone
+/// and the subject is everywhere, so the ring is its own part of the intersection, as the sweep would write it.
+/// The rest of the result lies within the other clipping polygons' boxes, and rounding moves it by less than
+/// `margin`: it cannot meet the copies.
+pub(crate) fn copied_whole(
+    clipping: &MultiPolygon,
+    boxes: &[Bounds],
+    inside: &[bool],
+    margin: f64,
+) -> (Vec<bool>, Vec<Polygon>) {
+    let candidates: Vec<bool> = (clipping.0.iter().enumerate())
+        .map(|(p, polygon)| {
+            polygon.holes.is_empty()
+                && open_len(&polygon.exterior) <= MAX_VERTICES_TO_COPY
+                && inside[p]
+        })
+        .collect();
+    let mut copied = vec![false; clipping.0.len()];
+    let mut polygons = Vec::new();
+    if !candidates.contains(&true) {
+        return (copied, polygons);
+    }
+    let apart = apart(boxes, margin, &candidates);
+    for (p, polygon) in clipping.0.iter().enumerate().filter(|&(p, _)| apart[p]) {
+        if let Some(ring) = as_written(&polygon.exterior) {
+            copied[p] = true;
+            polygons.push(Polygon::new(ring, Vec::new()));
+        }
+    }
+    (copied, polygons)
+}
+
+/// `ring` as the sweep writes a simple ring: closed, counter-clockwise, from its lowest-leftmost vertex (where the
+/// walk of [`crate::connect`] begins); `None` if it is not simple.
+fn as_written(ring: &[Point]) -> Option<Ring> {
+    let n = open_len(ring);
+    let mut closed: Ring = ring[..n].iter().chain(ring.first()).copied().collect();
+    let turn = simple_ring_turn(&closed)?;
+    closed.pop();
+    if turn == Ordering::Less {
+        closed.reverse();
+    }
+    let first = (0..n).min_by(|&i, &j| lexicographic(&closed[i], &closed[j]))?;
+    closed.rotate_left(first);
+    closed.push(closed[0]);
+    Some(closed)
+}
+
+/// Cells per box, on average, beyond which [`apart`] gives up: the grid is then too coarse for the boxes.
+const CELLS_PER_BOX: usize = 16;
+/// Boxes looked at for one box beyond which [`apart`] gives up on it: it shares its cells with too many.
+const MAX_LOOKED_AT: usize = 64;
+
+/// Which of the boxes that `asked` names are farther than `margin` from every other box of `boxes`. Each box is
+/// listed in the grid's cells that it touches once grown by `margin`, so that two boxes within `margin` of each
+/// other share a cell. Where the listing or a box's cells would hold too many (see [`CELLS_PER_BOX`],
+/// [`MAX_LOOKED_AT`]), the answer is "not apart": the pass stays linear in the boxes.
+fn apart(boxes: &[Bounds], margin: f64, asked: &[bool]) -> Vec<bool> {
+    let mut apart = vec![false; boxes.len()];
+    let grid = Grid::new(Bounds::around_all(boxes), Grid::side_for(boxes.len()));
+    let ranges: Vec<[[usize; 2]; 2]> = boxes.iter().map(|b| grid.range(&b.grown(margin))).collect();
+    let cells_in = |[[c0, c1], [r0, r1]]: [[usize; 2]; 2]| {
+        (r0..=r1).flat_map(move |r| (c0..=c1).map(move |c| r * grid.cells + c))
+    };
+    let listed: usize = (ranges.iter())
+        .map(|[[c0, c1], [r0, r1]]| (c1 - c0 + 1) * (r1 - r0 + 1))
+        .sum();
+    if listed > CELLS_PER_BOX * boxes.len() {
+        return apart;
+    }
+    // The boxes of each cell, counting-sorted by cell: `starts[cell]..starts[cell + 1]` of `members`.
+    let mut starts = vec![0usize; grid.cells * grid.cells + 1];
+    for &range in &ranges {
+        for cell in cells_in(range) {
+            starts[cell + 1] += 1;
+        }
+    }
+    for cell in 0..grid.cells * grid.cells {
+        starts[cell + 1] += starts[cell];
+    }
+    let (mut members, mut next) = (vec![0u32; listed], starts.clone());
+    for (i, &range) in ranges.iter().enumerate() {
+        for cell in cells_in(range) {
+            members[next[cell]] = i as u32;
+            next[cell] += 1;
+        }
+    }
+    for p in (0..boxes.len()).filter(|&p| asked[p]) {
+        let grown = boxes[p].grown(margin);
+        let mut others = cells_in(ranges[p])
+            .flat_map(|cell| &members[starts[cell]..starts[cell + 1]])
+            .filter(|&&q| q as usize != p);
+        apart[p] = (others.by_ref().take(MAX_LOOKED_AT)).all(|&q| !boxes[q as usize].meets(&grown))
+            && others.next().is_none();
+    }
+    apart
 }
 
 #[cfg(test)]
@@ -202,6 +312,42 @@ mod tests {
         );
         let known = KnownWinding::new(&operand, region_of(&operand), 4);
         assert_eq!(known.throughout(&b), Some(1));
+    }
+
+    /// `apart` against comparing every pair, on boxes of a coarse lattice (many touching at a side or a corner,
+    /// some points or segments), where a margin of 0.1 or 0.3 separates some pairs and not others.
+    #[test]
+    fn tells_boxes_apart_from_all_others_as_comparing_every_pair_does() {
+        let mut random = unit(43);
+        // Multiples of 1/4 up to 20.
+        let mut lattice = || (random() * 80.0).floor() / 4.0;
+        let (mut told, mut asked_in_all) = (0, 0);
+        for (count, margin) in [(1, 0.1), (2, 0.3), (30, 0.1), (200, 0.1), (200, 0.3)] {
+            let boxes: Vec<Bounds> = (0..count)
+                .map(|_| {
+                    let (x, y) = (lattice(), lattice());
+                    let (w, h) = (lattice() / 16.0, lattice() / 16.0);
+                    Bounds::at(&Point::new(x, y)).around(&Bounds::at(&Point::new(x + w, y + h)))
+                })
+                .collect();
+            let asked: Vec<bool> = (0..count).map(|i| i % 3 != 2).collect();
+            let found = apart(&boxes, margin, &asked);
+            for (p, b) in boxes.iter().enumerate() {
+                let grown = b.grown(margin);
+                let expected =
+                    asked[p] && (boxes.iter().enumerate()).all(|(q, c)| q == p || !c.meets(&grown));
+                assert_eq!(found[p], expected, "box {p} of {count}: {b:?}");
+                (told, asked_in_all) = (
+                    told + usize::from(expected),
+                    asked_in_all + usize::from(asked[p]),
+                );
+            }
+        }
+        // Both answers are given often (84 boxes apart of the 291 asked).
+        assert!(
+            told > 20 && told + 20 < asked_in_all,
+            "{told} of {asked_in_all}"
+        );
     }
 
     /// Wherever it knows the winding number of random polygons, it is right at random points of the box.

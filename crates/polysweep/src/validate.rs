@@ -5,7 +5,7 @@ use crate::geometry::{orient, MultiPolygon, Point};
 use std::cmp::Ordering;
 
 /// Sweep order of points; -0 equals 0.
-fn lexicographic(a: &Point, b: &Point) -> Ordering {
+pub(crate) fn lexicographic(a: &Point, b: &Point) -> Ordering {
     let cmp = |u: f64, v: f64| u.partial_cmp(&v).unwrap_or(Ordering::Equal);
     cmp(a.x, b.x).then(cmp(a.y, b.y))
 }
@@ -87,35 +87,17 @@ pub fn validate(result: &MultiPolygon) -> Result<(), String> {
     let mut edges: Vec<(Point, Point, usize, usize)> = Vec::new();
     for (pi, polygon) in result.0.iter().enumerate() {
         for (ri, ring) in polygon.rings().enumerate() {
-            let at = format!("polygon {pi}, ring {ri}");
-            if ring.len() < 4 || ring.first() != ring.last() {
-                return Err(format!("{at}: not closed or fewer than 3 vertices"));
-            }
-            if ring.windows(2).any(|w| w[0] == w[1]) {
-                return Err(format!("{at}: repeated consecutive point"));
-            }
-            let mut distinct: Vec<Point> = ring[..ring.len() - 1].to_vec();
-            distinct.sort_by(lexicographic);
-            if distinct.windows(2).any(|w| w[0] == w[1]) {
-                return Err(format!("{at}: the ring passes twice through one vertex"));
-            }
-            // Orientation at the lowest-leftmost vertex, exactly.
-            let n = ring.len() - 1;
-            let k = (0..n)
-                .min_by(|&i, &j| lexicographic(&ring[i], &ring[j]))
-                .expect("ring is not empty");
-            let turn = orient(ring[(k + n - 1) % n], ring[k], ring[k + 1]);
+            let at = || format!("polygon {pi}, ring {ri}");
+            let turn = ring_turn(ring).map_err(|problem| format!("{}: {problem}", at()))?;
             let want = if ri == 0 {
                 Ordering::Greater
             } else {
                 Ordering::Less
             };
-            if turn == Ordering::Equal {
-                return Err(format!("{at}: zero area"));
-            }
             if turn != want {
                 return Err(format!(
-                    "{at}: {} ring has the wrong orientation",
+                    "{}: {} ring has the wrong orientation",
+                    at(),
                     if ri == 0 { "exterior" } else { "hole" }
                 ));
             }
@@ -124,6 +106,44 @@ pub fn validate(result: &MultiPolygon) -> Result<(), String> {
     }
     check_edges(&mut edges)?;
     check_nesting(result)
+}
+
+/// The turn of closed `ring` at its lowest-leftmost vertex (its orientation, `Greater` counter-clockwise), or what
+/// is wrong with it on its own: too few vertices, a vertex twice, or no area there.
+fn ring_turn(ring: &[Point]) -> Result<Ordering, &'static str> {
+    if ring.len() < 4 || ring.first() != ring.last() {
+        return Err("not closed or fewer than 3 vertices");
+    }
+    if ring.windows(2).any(|w| w[0] == w[1]) {
+        return Err("repeated consecutive point");
+    }
+    let mut distinct: Vec<Point> = ring[..ring.len() - 1].to_vec();
+    distinct.sort_by(lexicographic);
+    if distinct.windows(2).any(|w| w[0] == w[1]) {
+        return Err("the ring passes twice through one vertex");
+    }
+    let n = ring.len() - 1;
+    let k = (0..n)
+        .min_by(|&i, &j| lexicographic(&ring[i], &ring[j]))
+        .expect("ring is not empty");
+    match orient(ring[(k + n - 1) % n], ring[k], ring[k + 1]) {
+        Ordering::Equal => Err("zero area"),
+        turn => Ok(turn),
+    }
+}
+
+/// The orientation of closed `ring` (`Greater` counter-clockwise) if it is simple: a ring [`validate`] would
+/// accept, its edges meeting only where consecutive ones share a vertex. Every pair of edges is tested: for small
+/// rings.
+pub(crate) fn simple_ring_turn(ring: &[Point]) -> Option<Ordering> {
+    if let Some(turn) = convex_turn(ring) {
+        return Some(turn);
+    }
+    let turn = ring_turn(ring).ok()?;
+    let edges = || ring.windows(2).map(|w| [w[0], w[1]]);
+    let crossing =
+        (edges().enumerate()).any(|(i, e)| edges().skip(i + 1).any(|f| edges_conflict(e, f)));
+    (!crossing).then_some(turn)
 }
 
 /// No two edges may meet except at a common endpoint.
@@ -136,33 +156,7 @@ fn check_edges(edges: &mut [(Point, Point, usize, usize)]) -> Result<(), String>
         active.retain(|&j| edges[j].0.x.max(edges[j].1.x) >= min_x);
         for &j in &active {
             let (c, d, pj, rj) = edges[j];
-            let (o1, o2) = (orient(a, b, c), orient(a, b, d));
-            let (o3, o4) = (orient(c, d, a), orient(c, d, b));
-            let shared = |p: Point| p == a || p == b;
-            let touches =
-                |p: Point, q: Point, r: Point, o: Ordering| o == Ordering::Equal && within(q, r, p);
-            let bad = if o1 == Ordering::Equal && o2 == Ordering::Equal {
-                // Collinear: they may share one endpoint, nothing more.
-                let overlap = [c, d].iter().any(|&p| within(a, b, p) && !shared(p))
-                    || [a, b].iter().any(|&p| within(c, d, p) && p != c && p != d)
-                    || (shared(c) && shared(d));
-                overlap
-            } else if o1 != o2
-                && o3 != o4
-                && o1 != Ordering::Equal
-                && o2 != Ordering::Equal
-                && o3 != Ordering::Equal
-                && o4 != Ordering::Equal
-            {
-                true // proper crossing
-            } else {
-                // An endpoint on the other edge is only allowed if it is the other's endpoint too.
-                (touches(c, a, b, o1) && !shared(c))
-                    || (touches(d, a, b, o2) && !shared(d))
-                    || (touches(a, c, d, o3) && a != c && a != d)
-                    || (touches(b, c, d, o4) && b != c && b != d)
-            };
-            if bad {
+            if edges_conflict([a, b], [c, d]) {
                 return Err(format!(
                     "edges cross or overlap: {a:?}-{b:?} (polygon {pi}, ring {ri}) and {c:?}-{d:?} (polygon {pj}, ring {rj})"
                 ));
@@ -171,6 +165,65 @@ fn check_edges(edges: &mut [(Point, Point, usize, usize)]) -> Result<(), String>
         active.push(i);
     }
     Ok(())
+}
+
+/// The orientation of closed `ring` if it is strictly convex, in one pass: it turns the same way, strictly, at every
+/// vertex, and goes around once. Turning one way, its direction goes around monotonically, k times in all, and the
+/// sign of its x component (zeros aside) changes twice per turn around: twice in all for a convex ring, 2k times
+/// for a star that winds k times.
+fn convex_turn(ring: &[Point]) -> Option<Ordering> {
+    let n = ring
+        .len()
+        .checked_sub(1)
+        .filter(|&n| n >= 3 && ring[0] == ring[n])?;
+    let at = |i: usize| ring[i % n];
+    let turn = orient(at(n - 1), at(0), at(1));
+    let x_direction = |i: usize| at(i + 1).x.partial_cmp(&at(i).x);
+    let mut last_direction = (0..n)
+        .rev()
+        .map(x_direction)
+        .find(|&d| d != Some(Ordering::Equal))?;
+    let mut changes = 0;
+    for i in 0..n {
+        if i > 0 && orient(at(i - 1), at(i), at(i + 1)) != turn {
+            return None;
+        }
+        let direction = x_direction(i);
+        if direction != Some(Ordering::Equal) {
+            changes += usize::from(direction != last_direction);
+            last_direction = direction;
+        }
+    }
+    (turn != Ordering::Equal && changes == 2).then_some(turn)
+}
+
+/// Do edges `a b` and `c d` meet other than at one common endpoint?
+fn edges_conflict([a, b]: [Point; 2], [c, d]: [Point; 2]) -> bool {
+    let (o1, o2) = (orient(a, b, c), orient(a, b, d));
+    let (o3, o4) = (orient(c, d, a), orient(c, d, b));
+    let shared = |p: Point| p == a || p == b;
+    let touches =
+        |p: Point, q: Point, r: Point, o: Ordering| o == Ordering::Equal && within(q, r, p);
+    if o1 == Ordering::Equal && o2 == Ordering::Equal {
+        // Collinear: they may share one endpoint, nothing more.
+        [c, d].iter().any(|&p| within(a, b, p) && !shared(p))
+            || [a, b].iter().any(|&p| within(c, d, p) && p != c && p != d)
+            || (shared(c) && shared(d))
+    } else if o1 != o2
+        && o3 != o4
+        && o1 != Ordering::Equal
+        && o2 != Ordering::Equal
+        && o3 != Ordering::Equal
+        && o4 != Ordering::Equal
+    {
+        true // proper crossing
+    } else {
+        // An endpoint on the other edge is only allowed if it is the other's endpoint too.
+        (touches(c, a, b, o1) && !shared(c))
+            || (touches(d, a, b, o2) && !shared(d))
+            || (touches(a, c, d, o3) && a != c && a != d)
+            || (touches(b, c, d, o4) && b != c && b != d)
+    }
 }
 
 /// Holes inside their shell and not inside each other; polygons' interiors disjoint.
@@ -227,6 +280,80 @@ mod tests {
 
     fn mp(rings: &[&[[f64; 2]]]) -> MultiPolygon {
         MultiPolygon::from_coordinates(&[rings.iter().map(|r| r.to_vec()).collect()])
+    }
+
+    /// Simple rings, by the one-pass test for convex ones and the pairwise test for the others, and rings that are
+    /// not simple, among them a five-pointed star, which turns the same way at every vertex.
+    #[test]
+    fn tells_simple_rings_and_their_orientation() {
+        let closed = |points: &[[f64; 2]]| -> Vec<Point> {
+            (points.iter().chain(points.first()))
+                .map(|&[x, y]| Point::new(x, y))
+                .collect()
+        };
+        let reversed =
+            |points: &[[f64; 2]]| closed(&points.iter().rev().copied().collect::<Vec<_>>());
+        let square = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
+        let l_shape = [
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [2.0, 1.0],
+            [1.0, 1.0],
+            [1.0, 2.0],
+            [0.0, 2.0],
+        ];
+        let straight_on = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [2.0, 2.0]];
+        for simple in [&square[..], &l_shape, &straight_on] {
+            assert_eq!(
+                simple_ring_turn(&closed(simple)),
+                Some(Ordering::Greater),
+                "{simple:?}"
+            );
+            assert_eq!(
+                simple_ring_turn(&reversed(simple)),
+                Some(Ordering::Less),
+                "{simple:?}"
+            );
+        }
+        assert_eq!(convex_turn(&closed(&square)), Some(Ordering::Greater));
+        assert_eq!(convex_turn(&closed(&l_shape)), None);
+        let star: Vec<[f64; 2]> = (0..5)
+            .map(|i| {
+                let angle = f64::from(i) * 4.0 * std::f64::consts::PI / 5.0;
+                [angle.cos(), angle.sin()]
+            })
+            .collect();
+        let bow_tie = [[0.0, 0.0], [2.0, 0.0], [0.0, 2.0], [2.0, 2.0]];
+        let spike = [[0.0, 0.0], [2.0, 0.0], [3.0, 0.0], [2.0, 0.0], [2.0, 2.0]];
+        let through_a_vertex_twice = [
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [1.0, 1.0],
+            [2.0, 2.0],
+            [0.0, 2.0],
+            [1.0, 1.0],
+        ];
+        let flat = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]];
+        let vertex_on_an_edge = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [2.0, 0.0], [0.0, 2.0]];
+        for not_simple in [
+            &star[..],
+            &bow_tie,
+            &spike,
+            &through_a_vertex_twice,
+            &flat,
+            &vertex_on_an_edge,
+        ] {
+            assert_eq!(
+                simple_ring_turn(&closed(not_simple)),
+                None,
+                "{not_simple:?}"
+            );
+            assert_eq!(
+                simple_ring_turn(&reversed(not_simple)),
+                None,
+                "{not_simple:?}"
+            );
+        }
     }
 
     #[test]

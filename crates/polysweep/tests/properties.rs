@@ -169,6 +169,59 @@ proptest! {
         check_membership(&a, &b, &samples(10, 1.0, 0.0), fill_rule)?;
     }
 
+    /// An intersection copies the clipping polygons wholly inside the subject and apart from the others to its
+    /// result without sweeping them (see `prune`): the result is, vertex for vertex, the one swept with the
+    /// operands swapped, where nothing is copied. Clipping shapes in the cells of a grid inside a square: simple
+    /// ones (star-shaped, some going straight on at a vertex), random rings (some crossing themselves), either
+    /// way round, and some put over the one before.
+    #[test]
+    fn copied_clipping_polygons_are_what_the_sweep_writes(
+        shapes in prop::collection::vec(
+            (prop::collection::vec((0i32..=4, 0i32..=4), 3..=8), 0u8..3, any::<bool>()),
+            16..=40,
+        ),
+        non_zero in any::<bool>(),
+    ) {
+        let mut polygons = Vec::new();
+        for (i, (points, kind, reversed)) in shapes.into_iter().enumerate() {
+            // Kind 0: star-shaped; 1: as drawn; 2: as drawn, over the cell of the shape before.
+            let cell = if kind == 2 { i.saturating_sub(1) } else { i };
+            let mut ring = match kind {
+                0 => match star(points, (2.01, 1.99)) {
+                    Some(ring) => ring,
+                    None => continue,
+                },
+                _ => ring(points, 1.0, 0.0),
+            };
+            if reversed {
+                ring.reverse();
+            }
+            let (dx, dy) = (5.0 * (cell % 8) as f64 + 0.5, 5.0 * (cell / 8) as f64 + 0.5);
+            let placed = ring.iter().map(|p| Point::new(p.x + dx, p.y + dy)).collect();
+            polygons.push(Polygon::new(placed, vec![]));
+        }
+        // [-5, 45]², 12 edges a side: few enough vertices for the clipping shapes to be judged by the subject's
+        // winding number, enough for a grid of 7 × 7 cells, the inner ones away from its edges.
+        let side = |k: i32| (0..12).map(move |i| -5.0 + 50.0 * f64::from(i) / 12.0).map(move |t| match k {
+            0 => Point::new(t, -5.0),
+            1 => Point::new(45.0, t),
+            2 => Point::new(40.0 - t, 45.0),
+            _ => Point::new(-5.0, 40.0 - t),
+        });
+        let subject = MultiPolygon(vec![Polygon::new((0..4).flat_map(side).collect(), vec![])]);
+        let clipping = MultiPolygon(polygons);
+        let options = Options { fill_rule: if non_zero { FillRule::NonZero } else { FillRule::EvenOdd } };
+        let sorted = |m: MultiPolygon| {
+            let mut polygons = m.to_coordinates();
+            polygons.sort_by(|a, b| a.partial_cmp(b).unwrap());
+            polygons
+        };
+        let copying = overlay(Operation::Intersection, &subject, &clipping, &options).unwrap();
+        prop_assert!(validate(&copying).is_ok());
+        let swept = overlay(Operation::Intersection, &clipping, &subject, &options).unwrap();
+        prop_assert_eq!(sorted(copying), sorted(swept));
+    }
+
     #[test]
     fn membership_with_coordinates_near_1e_minus_9(a in grid_operand(8), b in grid_operand(8)) {
         // 2^-30 ≈ 0.93e-9: the grid stays exactly representable, so the topology is the integer grid's.
