@@ -178,11 +178,13 @@ fn overlay_pair(
     // polygons are then judged by the boxes of the clipping polygons swept.
     let subject_winding = || -> Vec<Option<i32>> {
         // The grid costs about a pass over the subject's vertices: it can pay only when the clipping operand is not
-        // much smaller, in many polygons. It has about four cells per clipping polygon, as pruning needs cells
-        // smaller than the polygons it leaves out, and no more cells than the subject has vertices.
+        // much smaller, in many polygons. (Land × 3,895 squares, a quarter as many vertices: 3.4% fewer instructions
+        // for the intersection, 1.3% for the difference, 1.4% more for the union; × 2,048, an eighth: 0.6% more
+        // for the intersection.) It has about four cells per clipping polygon, as pruning needs cells smaller than
+        // the polygons it leaves out, and no more cells than the subject has vertices.
         let subject_vertices = subject.vertex_count();
         if clipping.0.len() < MIN_POLYGONS_TO_PRUNE
-            || 2 * clipping.vertex_count() < subject_vertices
+            || 4 * clipping.vertex_count() < subject_vertices
         {
             return vec![None; clipping.0.len()];
         }
