@@ -172,10 +172,17 @@ fn overlay_pair(
             .map(|b| coverage.may_meet(b))
             .collect::<Vec<bool>>()
     };
+    let (subject_box, clipping_box) = (
+        Bounds::around_all(&subject_boxes),
+        Bounds::around_all(&clipping_boxes),
+    );
+    let magnitude = subject_box.around(&clipping_box).magnitude();
+    // Farther apart than rounding moves anything, twice over.
+    let margin = 2.0 * connect::clearance(magnitude);
     // A clipping polygon wholly outside the subject, away from its edges, cannot change an intersection or a
     // difference, nor one wholly inside it a union; an intersection copies one wholly inside it and apart from the
-    // others to its result (see `prune`; judged by the whole subject, before any of it is left out). The subject's
-    // polygons are then judged by the boxes of the clipping polygons swept.
+    // others to its result (see `prune`; judged by the whole subject, before any of it is left out, and `margin`
+    // around each box). The subject's polygons are then judged by the boxes of the clipping polygons swept.
     let subject_winding = || -> Vec<Option<i32>> {
         // The grid costs about a pass over the subject's vertices: it can pay only when the clipping operand is not
         // much smaller, in many polygons. (Land × 3,895 squares, a quarter as many vertices: 3.4% fewer instructions
@@ -189,8 +196,10 @@ fn overlay_pair(
             return vec![None; clipping.0.len()];
         }
         let cells = input::Grid::side_for((4 * clipping.0.len()).min(subject_vertices));
-        let known = prune::KnownWinding::new(subject, Bounds::around_all(&subject_boxes), cells);
-        clipping_boxes.iter().map(|b| known.throughout(b)).collect()
+        let known = prune::KnownWinding::new(subject, subject_box, cells);
+        (clipping_boxes.iter())
+            .map(|b| known.throughout(&b.grown(margin)))
+            .collect()
     };
     // The clipping polygons throughout whose box the subject's winding number is known, and inside it or not as
     // `inside` says.
@@ -199,19 +208,12 @@ fn overlay_pair(
             .map(|w| w.is_some_and(|w| options.fill_rule.is_inside(w) == inside))
             .collect()
     };
-    let (subject_box, clipping_box) = (
-        Bounds::around_all(&subject_boxes),
-        Bounds::around_all(&clipping_boxes),
-    );
-    let magnitude = subject_box.around(&clipping_box).magnitude();
     // The clipping polygons that an intersection copies to its result instead of sweeping them (see `prune`).
     let mut copies = Vec::new();
     match operation {
         Operation::Intersection => {
             let winding = subject_winding();
             let outside = known_as(&winding, false);
-            // (Farther apart than rounding moves anything, twice over.)
-            let margin = 2.0 * connect::clearance(magnitude);
             let copied;
             (copied, copies) =
                 prune::copied_whole(clipping, &clipping_boxes, &known_as(&winding, true), margin);

@@ -19,10 +19,11 @@
 //! It decides nothing by rounding: the cells are chosen by a monotone float function, and every comparison is
 //! between input coordinates. Leaving out only polygons of the clipping operand, judged by the whole subject, keeps
 //! it exact together with the pruning by boxes: a subject polygon that pruning leaves out meets no clipping
-//! polygon's box that is swept. (One that meets only copied ones is covered by the copies where they are, and
-//! changes nothing elsewhere.)
+//! polygon's box that is swept. (One that meets only copied ones changes nothing where they are, as they lie
+//! wholly inside the subject, nor anywhere else.)
 
-use crate::geometry::{open_len, MultiPolygon, Point, Polygon, Ring};
+use crate::exact::Line;
+use crate::geometry::{open_len, ring_area, MultiPolygon, Point, Polygon, Ring};
 use crate::input::{running_sums, Bounds, Grid};
 use crate::validate::{lexicographic, simple_ring_turn};
 use std::cmp::Ordering;
@@ -118,11 +119,11 @@ const MAX_VERTICES_TO_COPY: usize = 32;
 
 /// The clipping polygons that an intersection copies to its result as they are, instead of sweeping them, and
 /// their copies as result polygons. Copied is a polygon that is one simple ring of a few vertices, that `inside`
-/// says lies wholly inside the subject, away from the subject's edges, and whose box is farther
+/// says lies wholly inside the subject, farther than `margin` from the subject's edges, and whose box is farther
 /// than `margin` from every other clipping polygon's box (`boxes`). There the clipping operand is that ring alone
-/// and the subject is everywhere, so the ring is its own part of the intersection, as the sweep would write it.
-/// The rest of the result lies within the other clipping polygons' boxes, and rounding moves it by less than
-/// `margin`: it cannot meet the copies.
+/// and the subject is everywhere, so the ring is its own part of the intersection. The rest of the result lies
+/// within the other clipping polygons' boxes, and rounding moves it by less than `margin`: it cannot meet the
+/// copies, nor be snapped to them (see [`crate::connect`]).
 pub(crate) fn copied_whole(
     clipping: &MultiPolygon,
     boxes: &[Bounds],
@@ -143,7 +144,7 @@ pub(crate) fn copied_whole(
     }
     let apart = apart(boxes, margin, &candidates);
     for (p, polygon) in clipping.0.iter().enumerate().filter(|&(p, _)| apart[p]) {
-        if let Some(ring) = as_written(&polygon.exterior) {
+        if let Some(ring) = as_written(&polygon.exterior, margin) {
             copied[p] = true;
             polygons.push(Polygon::new(ring, Vec::new()));
         }
@@ -152,11 +153,17 @@ pub(crate) fn copied_whole(
 }
 
 /// `ring` as the sweep writes a simple ring: closed, counter-clockwise, from its lowest-leftmost vertex (where the
-/// walk of [`crate::connect`] begins); `None` if it is not simple.
-fn as_written(ring: &[Point]) -> Option<Ring> {
+/// walk of [`crate::connect`] begins). `None` if it is not simple, or where the sweep would write it otherwise:
+/// where its float area, by which `connect` tells a ring's orientation, has not the sign of its exact turn (a
+/// sliver, which `connect` drops), or where a vertex lies within `margin` of an edge not its own (an edge that
+/// `connect` could bend through the vertex, should the result be rounded anywhere).
+fn as_written(ring: &[Point], margin: f64) -> Option<Ring> {
     let n = open_len(ring);
     let mut closed: Ring = ring[..n].iter().chain(ring.first()).copied().collect();
     let turn = simple_ring_turn(&closed)?;
+    if ring_area(&closed).partial_cmp(&0.0) != Some(turn) || vertex_near_an_edge(&closed, margin) {
+        return None;
+    }
     closed.pop();
     if turn == Ordering::Less {
         closed.reverse();
@@ -165,6 +172,27 @@ fn as_written(ring: &[Point]) -> Option<Ring> {
     closed.rotate_left(first);
     closed.push(closed[0]);
     Some(closed)
+}
+
+/// Does a vertex of closed `ring` lie within about `margin` of one of its edges that does not end there? Asked in
+/// floats, of twice `margin` (the error of the cross product is far below it) and of the edge's box grown by as
+/// much.
+fn vertex_near_an_edge(ring: &[Point], margin: f64) -> bool {
+    let n = ring.len() - 1;
+    let near = 2.0 * margin;
+    (0..n).any(|e| {
+        let (a, b) = (ring[e], ring[e + 1]);
+        let around = Bounds::at(&a).around(&Bounds::at(&b)).grown(near);
+        let line = Line {
+            a: [a.x, a.y],
+            b: [b.x, b.y],
+        };
+        (0..n).filter(|&v| v != e && v != (e + 1) % n).any(|v| {
+            let ([dx, dy], cross) = line.float_offset([ring[v].x, ring[v].y]);
+            Bounds::at(&ring[v]).meets(&around)
+                && cross * cross <= near * near * (dx * dx + dy * dy)
+        })
+    })
 }
 
 /// Cells per box, on average, beyond which [`apart`] gives up: the grid is then too coarse for the boxes.
@@ -179,15 +207,24 @@ const MAX_LOOKED_AT: usize = 64;
 fn apart(boxes: &[Bounds], margin: f64, asked: &[bool]) -> Vec<bool> {
     let mut apart = vec![false; boxes.len()];
     let grid = Grid::new(Bounds::around_all(boxes), Grid::side_for(boxes.len()));
-    let ranges: Vec<[[usize; 2]; 2]> = boxes.iter().map(|b| grid.range(&b.grown(margin))).collect();
+    // The cells of each box grown by `margin`; none for an empty box (of a polygon without vertices), which meets
+    // nothing.
+    let ranges: Vec<[[usize; 2]; 2]> = (boxes.iter())
+        .map(|b| match b.meets(&grid.region) {
+            true => grid.range(&b.grown(margin)),
+            false => [[1, 0], [1, 0]],
+        })
+        .collect();
     let cells_in = |[[c0, c1], [r0, r1]]: [[usize; 2]; 2]| {
         (r0..=r1).flat_map(move |r| (c0..=c1).map(move |c| r * grid.cells + c))
     };
-    let listed: usize = (ranges.iter())
-        .map(|[[c0, c1], [r0, r1]]| (c1 - c0 + 1) * (r1 - r0 + 1))
-        .sum();
-    if listed > CELLS_PER_BOX * boxes.len() {
-        return apart;
+    let (budget, mut listed) = (CELLS_PER_BOX * boxes.len(), 0);
+    for [[c0, c1], [r0, r1]] in &ranges {
+        // (Counted box by box, checked as it goes: the sum of all could overflow a 32-bit `usize`.)
+        listed += (c1 + 1).saturating_sub(*c0) * (r1 + 1).saturating_sub(*r0);
+        if listed > budget {
+            return apart;
+        }
     }
     // The boxes of each cell, counting-sorted by cell: `starts[cell]..starts[cell + 1]` of `members`.
     let mut starts = vec![0usize; grid.cells * grid.cells + 1];
@@ -314,6 +351,48 @@ mod tests {
         assert_eq!(known.throughout(&b), Some(1));
     }
 
+    /// A simple ring is written closed, counter-clockwise, from its lowest-leftmost vertex; not one that the sweep
+    /// would write otherwise: a sliver whose float area is 0 (exactly 2^-95, which `connect` drops; its vertex
+    /// across from the long edge is also too close to that edge, by the float cross product, 0), or one with a
+    /// vertex 2.4e-15 from an edge not its own (which `connect` may bend through it).
+    #[test]
+    fn writes_a_ring_as_the_sweep_does_or_not_at_all() {
+        let ring = |points: &[[f64; 2]]| -> Vec<Point> {
+            points.iter().map(|&[x, y]| Point::new(x, y)).collect()
+        };
+        let clockwise = ring(&[[1.0, 1.0], [0.0, 1.0], [0.0, 0.0], [1.0, 0.0]]);
+        assert_eq!(
+            as_written(&clockwise, 1e-15),
+            Some(ring(&[
+                [0.0, 0.0],
+                [1.0, 0.0],
+                [1.0, 1.0],
+                [0.0, 1.0],
+                [0.0, 0.0]
+            ]))
+        );
+        let e = f64::powi(2.0, -47);
+        let sliver = ring(&[[40.0, 40.0], [41.0 + e, 41.0], [41.0, 41.0 - e]]);
+        assert_eq!(as_written(&sliver, 0.0), None);
+        let close = ring(&[
+            [40.0, 40.0],
+            [43.0, 41.0],
+            [43.0, 43.0],
+            [41.0, 121.0 / 3.0],
+            [40.0, 43.0],
+        ]);
+        assert_eq!(as_written(&close, 1e-14), None);
+        // The same with the vertex farther off: written.
+        let apart = ring(&[
+            [40.0, 40.0],
+            [43.0, 41.0],
+            [43.0, 43.0],
+            [41.0, 40.5],
+            [40.0, 43.0],
+        ]);
+        assert!(as_written(&apart, 1e-14).is_some());
+    }
+
     /// `apart` against comparing every pair, on boxes of a coarse lattice (many touching at a side or a corner,
     /// some points or segments), where a margin of 0.1 or 0.3 separates some pairs and not others.
     #[test]
@@ -323,8 +402,12 @@ mod tests {
         let mut lattice = || (random() * 80.0).floor() / 4.0;
         let (mut told, mut asked_in_all) = (0, 0);
         for (count, margin) in [(1, 0.1), (2, 0.3), (30, 0.1), (200, 0.1), (200, 0.3)] {
+            // (With the box of a polygon without vertices, which meets nothing, among them.)
             let boxes: Vec<Bounds> = (0..count)
-                .map(|_| {
+                .map(|i| {
+                    if i == 1 {
+                        return Bounds::EMPTY;
+                    }
                     let (x, y) = (lattice(), lattice());
                     let (w, h) = (lattice() / 16.0, lattice() / 16.0);
                     Bounds::at(&Point::new(x, y)).around(&Bounds::at(&Point::new(x + w, y + h)))

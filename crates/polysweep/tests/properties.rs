@@ -173,7 +173,9 @@ proptest! {
     /// result without sweeping them (see `prune`): the result is, vertex for vertex, the one swept with the
     /// operands swapped, where nothing is copied. Clipping shapes in the cells of a grid inside a square: simple
     /// ones (star-shaped, some going straight on at a vertex), random rings (some crossing themselves), either
-    /// way round, and some put over the one before.
+    /// way round, and some put over the one before; and one across the square's side, whose crossings make the
+    /// result rounded (so that edges passing close to vertices may be bent through them). Coordinates on an
+    /// integer grid, or all scaled by 0.1 (not exact decimals, so that points meant to be collinear are not).
     #[test]
     fn copied_clipping_polygons_are_what_the_sweep_writes(
         shapes in prop::collection::vec(
@@ -181,8 +183,12 @@ proptest! {
             16..=40,
         ),
         non_zero in any::<bool>(),
+        scaled in any::<bool>(),
     ) {
-        let mut polygons = Vec::new();
+        let scale = if scaled { 0.1 } else { 1.0 };
+        let at = |x: f64, y: f64| Point::new(x * scale, y * scale);
+        let across_the_side = vec![at(44.0, 20.0), at(46.0, 20.0), at(46.0, 21.5), at(44.0, 21.0)];
+        let mut polygons = vec![Polygon::new(across_the_side, vec![])];
         for (i, (points, kind, reversed)) in shapes.into_iter().enumerate() {
             // Kind 0: star-shaped; 1: as drawn; 2: as drawn, over the cell of the shape before.
             let cell = if kind == 2 { i.saturating_sub(1) } else { i };
@@ -197,16 +203,16 @@ proptest! {
                 ring.reverse();
             }
             let (dx, dy) = (5.0 * (cell % 8) as f64 + 0.5, 5.0 * (cell / 8) as f64 + 0.5);
-            let placed = ring.iter().map(|p| Point::new(p.x + dx, p.y + dy)).collect();
+            let placed = ring.iter().map(|p| at(p.x + dx, p.y + dy)).collect();
             polygons.push(Polygon::new(placed, vec![]));
         }
         // [-5, 45]², 12 edges a side: few enough vertices for the clipping shapes to be judged by the subject's
         // winding number, enough for a grid of 7 × 7 cells, the inner ones away from its edges.
         let side = |k: i32| (0..12).map(move |i| -5.0 + 50.0 * f64::from(i) / 12.0).map(move |t| match k {
-            0 => Point::new(t, -5.0),
-            1 => Point::new(45.0, t),
-            2 => Point::new(40.0 - t, 45.0),
-            _ => Point::new(-5.0, 40.0 - t),
+            0 => at(t, -5.0),
+            1 => at(45.0, t),
+            2 => at(40.0 - t, 45.0),
+            _ => at(-5.0, 40.0 - t),
         });
         let subject = MultiPolygon(vec![Polygon::new((0..4).flat_map(side).collect(), vec![])]);
         let clipping = MultiPolygon(polygons);

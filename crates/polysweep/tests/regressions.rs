@@ -110,12 +110,13 @@ fn assert_area_and_edges_swept(
 }
 
 /// A clipping polygon wholly outside the subject and away from its edges is left out of an intersection and a
-/// difference, and one wholly inside it out of a union; an intersection copies one wholly inside it, apart from the
-/// other clipping polygons, to its result without sweeping it. Subject: [0, 100]² (each side cut into 100 edges) with the
-/// hole [40, 60]² (each side cut into 25): 500 edges. Clipping: 100 squares of side 2 at (10i + 4, 10j + 4), i and
-/// j from 0 to 9. The subject's winding number is known on a grid of 20 × 20 cells of side 5 (four cells per
-/// clipping square, fewer than the subject's vertices), in the cells that no edge touches: not in the outermost
-/// rows and columns (the square's sides) nor where the hole's sides run (columns and rows 8 and 12, from 8 to 12).
+/// difference, and one wholly inside it out of a union; an intersection copies one wholly inside it, apart from
+/// the other clipping polygons, to its result without sweeping it. Subject: [0, 100]² (each side cut into 100
+/// edges) with the hole [40, 60]² (each side cut into 25): 500 edges. Clipping: 100 squares of side 2 at
+/// (10i + 4, 10j + 4), i and j from 0 to 9. The subject's winding number is known on a grid of 20 × 20 cells of side
+/// 5 (four cells per clipping square, fewer than the subject's vertices), in the cells that no edge touches: not in
+/// the outermost rows and columns (the square's sides) nor where the hole's sides run (columns and rows 8 and 12,
+/// from 8 to 12).
 /// Square (i, j) covers columns 2i and 2i + 1 and rows 2j and 2j + 1, so, worked out by hand:
 /// - known inside: i and j from 1 to 8 but not both from 4 to 6: 64 − 9 = 55 squares;
 /// - known outside: (5, 5), in the hole, away from its sides: 1 square;
