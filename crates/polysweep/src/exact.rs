@@ -225,6 +225,14 @@ impl Line {
         let (dx, dy) = (self.b[0] - self.a[0], self.b[1] - self.a[1]);
         ([dx, dy], (p[0] - self.a[0]) * dy - (p[1] - self.a[1]) * dx)
     }
+
+    /// Is `p` within `distance` of the line, in floats (see [`Self::float_offset`]): |cross| / |d| ≤ `distance`,
+    /// compared squared to avoid the square root.
+    #[inline(always)]
+    pub fn float_within(&self, p: [f64; 2], distance: f64) -> bool {
+        let ([dx, dy], cross) = self.float_offset(p);
+        cross * cross <= distance * distance * (dx * dx + dy * dy)
+    }
 }
 
 /// A point of the sweep: an input vertex, or the exact crossing of two input segments' lines.

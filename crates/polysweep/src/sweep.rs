@@ -300,10 +300,7 @@ impl<'a> Sweep<'a> {
             right: b,
             ..
         } = *self.status.key(node);
-        let ([dx, dy], cross) = line.float_offset(p.approx);
-        // distance = |cross| / |d|, compared squared to avoid the square root.
-        let within = |clearance: f64| cross * cross <= clearance * clearance * (dx * dx + dy * dy);
-        if !within(self.widest_clearance) {
+        if !line.float_within(p.approx, self.widest_clearance) {
             return false;
         }
         let magnitude = [a.approx, b.approx, p.approx]
@@ -311,7 +308,7 @@ impl<'a> Sweep<'a> {
             .flatten()
             .fold(0.0f64, |m, v| larger(m, v.abs()));
         // A vertex of the edge moves with it.
-        within(crate::connect::clearance(magnitude))
+        line.float_within(p.approx, crate::connect::clearance(magnitude))
             && ![a, b]
                 .iter()
                 .any(|q| self.exact.cmp_points(q, p) == Ordering::Equal)

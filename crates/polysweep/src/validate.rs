@@ -5,9 +5,16 @@ use crate::geometry::{orient, MultiPolygon, Point};
 use std::cmp::Ordering;
 
 /// Sweep order of points; -0 equals 0.
-pub(crate) fn lexicographic(a: &Point, b: &Point) -> Ordering {
+fn lexicographic(a: &Point, b: &Point) -> Ordering {
     let cmp = |u: f64, v: f64| u.partial_cmp(&v).unwrap_or(Ordering::Equal);
     cmp(a.x, b.x).then(cmp(a.y, b.y))
+}
+
+/// The index of the first of `points` (not empty) in sweep order: the lowest-leftmost.
+pub(crate) fn lowest_leftmost(points: &[Point]) -> usize {
+    (0..points.len())
+        .min_by(|&i, &j| lexicographic(&points[i], &points[j]))
+        .expect("points are not empty")
 }
 
 /// Is `p` on the closed segment `a b`, given that it is on its line?
@@ -123,9 +130,7 @@ fn ring_turn(ring: &[Point]) -> Result<Ordering, &'static str> {
         return Err("the ring passes twice through one vertex");
     }
     let n = ring.len() - 1;
-    let k = (0..n)
-        .min_by(|&i, &j| lexicographic(&ring[i], &ring[j]))
-        .expect("ring is not empty");
+    let k = lowest_leftmost(&ring[..n]);
     match orient(ring[(k + n - 1) % n], ring[k], ring[k + 1]) {
         Ordering::Equal => Err("zero area"),
         turn => Ok(turn),
