@@ -370,7 +370,22 @@ pub(crate) struct Head {
 pub(crate) struct EventQueue {
     initial: EventId,
     next_initial: EventId,
-    heap: Vec<EventId>,
+    heap: Vec<Pending>,
+}
+
+/// An event in the heap, with its point's x. Most pairs are ordered by their x's alone, without reading the events,
+/// which lie far apart in memory: an x is exact or correctly rounded, and rounding is monotone, so points whose x's
+/// differ lie in the order of their x's. Only pairs with one x are given to the full order.
+#[derive(Clone, Copy)]
+struct Pending {
+    x: f64,
+    event: EventId,
+}
+
+/// Does `a` come before `b`, by x and then by `order`?
+#[inline(always)]
+fn before(a: Pending, b: Pending, order: &impl Fn(EventId, EventId) -> Ordering) -> bool {
+    a.x < b.x || (a.x == b.x && order(a.event, b.event) == Ordering::Less)
 }
 
 impl EventQueue {
@@ -389,12 +404,13 @@ impl EventQueue {
         self.heap.clear();
     }
 
-    pub fn push(&mut self, event: EventId, order: impl Fn(EventId, EventId) -> Ordering) {
-        self.heap.push(event);
+    /// Puts in `event`, whose point's x is `x`.
+    pub fn push(&mut self, event: EventId, x: f64, order: impl Fn(EventId, EventId) -> Ordering) {
+        self.heap.push(Pending { x, event });
         let mut child = self.heap.len() - 1;
         while child > 0 {
             let parent = (child - 1) / 2;
-            if order(self.heap[child], self.heap[parent]) != Ordering::Less {
+            if !before(self.heap[child], self.heap[parent], &order) {
                 break;
             }
             self.heap.swap(child, parent);
@@ -402,22 +418,32 @@ impl EventQueue {
         }
     }
 
-    /// The next event, without taking it (see [`Self::take`]).
-    pub fn peek(&self, order: impl Fn(EventId, EventId) -> Ordering) -> Option<Head> {
+    /// The next event, without taking it (see [`Self::take`]). `x` gives an event's point's x.
+    pub fn peek(
+        &self,
+        x: impl Fn(EventId) -> f64,
+        order: impl Fn(EventId, EventId) -> Ordering,
+    ) -> Option<Head> {
         let initial = Some(self.next_initial).filter(|&i| i < self.initial);
         let head = |event, from_heap| Some(Head { event, from_heap });
         match (initial, self.heap.first()) {
             (None, None) => None,
             (Some(i), None) => head(i, false),
-            (None, Some(&h)) => head(h, true),
-            (Some(i), Some(&h)) if order(h, i) == Ordering::Less => head(h, true),
+            (None, Some(h)) => head(h.event, true),
+            (Some(i), Some(&h)) if before(h, Pending { x: x(i), event: i }, &order) => {
+                head(h.event, true)
+            }
             (Some(i), Some(_)) => head(i, false),
         }
     }
 
     #[inline(always)]
-    pub fn pop(&mut self, order: impl Fn(EventId, EventId) -> Ordering) -> Option<EventId> {
-        let head = self.peek(&order)?;
+    pub fn pop(
+        &mut self,
+        x: impl Fn(EventId) -> f64,
+        order: impl Fn(EventId, EventId) -> Ordering,
+    ) -> Option<EventId> {
+        let head = self.peek(x, &order)?;
         self.take(head, order);
         Some(head.event)
     }
@@ -436,8 +462,7 @@ impl EventQueue {
             let (l, r) = (2 * parent + 1, 2 * parent + 2);
             let mut smallest = parent;
             for child in [l, r] {
-                if child < self.heap.len()
-                    && order(self.heap[child], self.heap[smallest]) == Ordering::Less
+                if child < self.heap.len() && before(self.heap[child], self.heap[smallest], &order)
                 {
                     smallest = child;
                 }
@@ -448,7 +473,7 @@ impl EventQueue {
             self.heap.swap(parent, smallest);
             parent = smallest;
         }
-        debug_assert_eq!(top, head.event, "the head taken is the one peeked");
+        debug_assert_eq!(top.event, head.event, "the head taken is the one peeked");
     }
 }
 
@@ -574,16 +599,29 @@ mod tests {
 
     #[test]
     fn queue_pops_in_order_across_initial_and_pushed_events() {
-        let keys = [1, 5, 9, 3, 7, 2, 8];
-        let order = |a: EventId, b: EventId| keys[a as usize].cmp(&keys[b as usize]);
+        // Points ordered by x and then y: the heap tells apart those of different x by x, the others by the order.
+        let points = [
+            [1, 0],
+            [5, 1],
+            [9, 0],
+            [5, 0],
+            [7, 0],
+            [1, 1],
+            [5, 2],
+            [5, -1],
+        ];
+        let order = |a: EventId, b: EventId| points[a as usize].cmp(&points[b as usize]);
+        let x = |e: EventId| f64::from(points[e as usize][0]);
         let mut queue = EventQueue::new(3);
-        for e in [3, 4, 5, 6] {
-            queue.push(e, order);
+        for e in [3, 4, 5, 6, 7] {
+            queue.push(e, x(e), order);
         }
         let mut popped = Vec::new();
-        while let Some(e) = queue.pop(order) {
-            popped.push(keys[e as usize]);
+        while let Some(e) = queue.pop(x, order) {
+            popped.push(points[e as usize]);
         }
-        assert_eq!(popped, [1, 2, 3, 5, 7, 8, 9]);
+        let mut sorted = points.to_vec();
+        sorted.sort();
+        assert_eq!(popped, sorted);
     }
 }

@@ -176,17 +176,17 @@ impl<'a> Sweep<'a> {
         if self.stopped {
             return;
         }
-        self.queue.push(e, |a, b| {
+        self.queue.push(e, self.point(e).approx[0], |a, b| {
             event_order(&self.events, self.edges, &self.exact, a, b)
         });
     }
 
     /// Fig. 5's main loop.
     pub fn run(&mut self) -> Result<(), Error> {
-        while let Some(e) = self
-            .queue
-            .pop(|a, b| event_order(&self.events, self.edges, &self.exact, a, b))
-        {
+        while let Some(e) = self.queue.pop(
+            |e| self.events[e as usize].point.approx[0],
+            |a, b| event_order(&self.events, self.edges, &self.exact, a, b),
+        ) {
             let point = self.point(e);
             if self
                 .exact
@@ -464,9 +464,10 @@ impl<'a> Sweep<'a> {
     /// removal, no search from the root, and no possibleInter between neighbours that would not stay neighbours.
     /// The result is the same as removing and inserting; at most vertices of a coastline, this is what happens.
     fn successor_in_place(&mut self, node: u32) -> Option<EventId> {
-        let head = self
-            .queue
-            .peek(|a, b| event_order(&self.events, self.edges, &self.exact, a, b))?;
+        let head = self.queue.peek(
+            |e| self.events[e as usize].point.approx[0],
+            |a, b| event_order(&self.events, self.edges, &self.exact, a, b),
+        )?;
         let next = head.event;
         let event = self.event(next);
         if !event.left() || self.exact.cmp_points(&event.point, &self.current) != Ordering::Equal {
