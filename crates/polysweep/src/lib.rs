@@ -165,13 +165,7 @@ fn overlay_pair(
     );
     // About as many cells as polygons.
     let cells = input::Grid::side_for(polygons);
-    let meeting = |boxes: &[Bounds], other: &[Bounds]| {
-        let coverage = input::Coverage::new(other, cells);
-        boxes
-            .iter()
-            .map(|b| coverage.may_meet(b))
-            .collect::<Vec<bool>>()
-    };
+    let coverage = |boxes: &[Bounds]| input::Coverage::new(boxes, cells);
     let (subject_box, clipping_box) = (
         Bounds::around_all(&subject_boxes),
         Bounds::around_all(&clipping_boxes),
@@ -219,17 +213,21 @@ fn overlay_pair(
                 .filter(|&p| swept(p))
                 .map(|p| clipping_boxes[p])
                 .collect();
-            let kept = meeting(&subject_boxes, &clipping_kept);
-            input::add_edges(&mut edges, subject, 0, |p| kept[p]);
-            let kept = meeting(&clipping_boxes, &subject_boxes);
-            input::add_edges(&mut edges, clipping, 1, |p| kept[p] && swept(p));
+            let near_clipping = coverage(&clipping_kept);
+            input::add_edges(&mut edges, subject, 0, |p| {
+                near_clipping.may_meet(&subject_boxes[p])
+            });
+            let near_subject = coverage(&subject_boxes);
+            input::add_edges(&mut edges, clipping, 1, |p| {
+                swept(p) && near_subject.may_meet(&clipping_boxes[p])
+            });
         }
         Operation::Difference => {
             input::add_edges(&mut edges, subject, 0, keep_all);
             let inside = inside_subject(4);
-            let kept = meeting(&clipping_boxes, &subject_boxes);
+            let near_subject = coverage(&subject_boxes);
             input::add_edges(&mut edges, clipping, 1, |p| {
-                kept[p] && inside[p] != Some(false)
+                inside[p] != Some(false) && near_subject.may_meet(&clipping_boxes[p])
             });
         }
         Operation::Union => {
