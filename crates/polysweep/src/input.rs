@@ -117,6 +117,17 @@ impl Bounds {
         self.min[k]
     }
 
+    /// The four corners (of a box that is not empty).
+    pub fn corners(&self) -> [Point; 4] {
+        let ([x0, y0], [x1, y1]) = (self.min, self.max);
+        [
+            Point::new(x0, y0),
+            Point::new(x1, y0),
+            Point::new(x1, y1),
+            Point::new(x0, y1),
+        ]
+    }
+
     /// The largest magnitude of a coordinate in the box (0 for an empty box): every point the sweep makes from
     /// edges within the box lies within it, crossings included.
     pub fn magnitude(&self) -> f64 {

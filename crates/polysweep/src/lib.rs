@@ -112,8 +112,8 @@ pub struct Stats {
     /// Edges swept: those of all operands, less zero-length ones and those of the polygons left out: for an
     /// intersection or a difference, polygons whose box meets no polygon's box of the other operand, and clipping
     /// polygons wholly outside the subject away from its edges; for an intersection also those copied to the
-    /// result, wholly inside the subject and apart from the others; for a union, clipping polygons wholly inside it
-    /// (see [`prune`]).
+    /// result, wholly inside the subject and apart from the others; for a union, clipping polygons wholly inside it;
+    /// for a union or a difference, subject polygons inside one convex clipping polygon (see [`prune`]).
     pub input_edges: usize,
     /// Points where two edges properly cross (constructed intersection points).
     pub crossings: usize,
@@ -201,6 +201,10 @@ fn overlay_pair(
             .map(|b| (known.throughout(&b.grown(margin))).map(|w| options.fill_rule.is_inside(w)))
             .collect()
     };
+    // A subject polygon inside one convex clipping polygon, away from the others, cannot change a union or a
+    // difference either (see `prune`; exact together with leaving out clipping polygons as above).
+    let subject_inside_clipping =
+        || prune::inside_one_convex(clipping, &clipping_boxes, &subject_boxes, margin);
     // The clipping polygons that an intersection copies to its result instead of sweeping them (see `prune`).
     let mut copies = Vec::new();
     match operation {
@@ -223,7 +227,8 @@ fn overlay_pair(
             });
         }
         Operation::Difference => {
-            input::add_edges(&mut edges, subject, 0, keep_all);
+            let left_out = subject_inside_clipping();
+            input::add_edges(&mut edges, subject, 0, |p| !left_out[p]);
             let inside = inside_subject(4);
             let near_subject = coverage(&subject_boxes);
             input::add_edges(&mut edges, clipping, 1, |p| {
@@ -231,7 +236,8 @@ fn overlay_pair(
             });
         }
         Operation::Union => {
-            input::add_edges(&mut edges, subject, 0, keep_all);
+            let left_out = subject_inside_clipping();
+            input::add_edges(&mut edges, subject, 0, |p| !left_out[p]);
             let inside = inside_subject(2);
             input::add_edges(&mut edges, clipping, 1, |p| inside[p] != Some(true));
         }

@@ -176,7 +176,7 @@ fn check_edges(edges: &mut [(Point, Point, usize, usize)]) -> Result<(), String>
 /// vertex, and goes around once. Turning one way, its direction goes around monotonically, k times in all, and the
 /// sign of its x component (zeros aside) changes twice per turn around: twice in all for a convex ring, 2k times
 /// for a star that winds k times.
-fn convex_turn(ring: &[Point]) -> Option<Ordering> {
+pub(crate) fn convex_turn(ring: &[Point]) -> Option<Ordering> {
     let n = ring
         .len()
         .checked_sub(1)

@@ -169,6 +169,66 @@ proptest! {
         check_membership(&a, &b, &samples(10, 1.0, 0.0), fill_rule)?;
     }
 
+    /// Many small subject shapes (random rings, some crossing themselves) in blocks of a grid, against clipping
+    /// polygons around some blocks: a square either way round or a diamond, which are convex (a union or a difference
+    /// then leaves the shapes inside out of the sweep, see `prune::inside_one_convex`); a triangle across the block
+    /// (convex, but its box holds shapes that it does not); an L, which is not convex; a
+    /// five-pointed star, whose middle it winds around twice (outside it under the even-odd rule); or a square with
+    /// another over one of its corners, whose box the shapes' boxes may meet too. Under either fill rule.
+    #[test]
+    fn membership_with_subject_shapes_inside_convex_clipping_polygons(
+        shapes in prop::collection::vec(
+            ((0usize..16), prop::collection::vec((0i32..=2, 0i32..=2), 3..=6)),
+            16..=40,
+        ),
+        around in prop::collection::vec(0u8..8, 16),
+        non_zero in any::<bool>(),
+    ) {
+        // Block k of a 4 × 4 layout spans [4i, 4i + 2] × [4j, 4j + 2]; its clipping polygon reaches half a unit
+        // or more beyond it, so that no sample or shape vertex lies on that polygon's edges.
+        let corner = |k: usize| (4.0 * (k % 4) as f64, 4.0 * (k / 4) as f64);
+        let subject = MultiPolygon(
+            (shapes.into_iter())
+                .map(|(k, points)| {
+                    let (x, y) = corner(k);
+                    let ring = points.iter().map(|&(u, v)| Point::new(x + f64::from(u), y + f64::from(v)));
+                    Polygon::new(ring.collect(), vec![])
+                })
+                .collect(),
+        );
+        let mut clipping = Vec::new();
+        for (k, &kind) in around.iter().enumerate() {
+            let (x, y) = corner(k);
+            let at = |points: &[(f64, f64)]| points.iter().map(|&(u, v)| Point::new(x + u, y + v)).collect();
+            let square: Vec<Point> = at(&[(-0.5, -0.5), (2.5, -0.5), (2.5, 2.5), (-0.5, 2.5)]);
+            match kind {
+                0 => clipping.push(Polygon::new(square, vec![])),
+                1 => clipping.push(Polygon::new(square.into_iter().rev().collect(), vec![])),
+                2 => clipping.push(Polygon::new(at(&[(1.0, -1.5), (3.5, 1.0), (1.0, 3.5), (-1.5, 1.0)]), vec![])),
+                3 => clipping.push(Polygon::new(
+                    at(&[(-0.5, -0.5), (2.5, -0.5), (2.5, 1.5), (1.5, 1.5), (1.5, 2.5), (-0.5, 2.5)]),
+                    vec![],
+                )),
+                4 => {
+                    clipping.push(Polygon::new(square, vec![]));
+                    clipping.push(Polygon::new(at(&[(1.5, 1.5), (3.0, 1.5), (3.0, 3.0), (1.5, 3.0)]), vec![]));
+                }
+                5 => {
+                    // Every second point of five around the block's middle: its inner pentagon holds the block.
+                    let point = |i: usize| {
+                        let angle = std::f64::consts::FRAC_PI_2 + (2 * i % 5) as f64 * 2.0 * std::f64::consts::PI / 5.0;
+                        (1.0 + 5.0 * angle.cos(), 1.0 + 5.0 * angle.sin())
+                    };
+                    clipping.push(Polygon::new(at(&(0..5).map(point).collect::<Vec<_>>()), vec![]));
+                }
+                6 => clipping.push(Polygon::new(at(&[(-0.5, -0.5), (3.5, -0.5), (-0.5, 3.5)]), vec![])),
+                _ => {}
+            }
+        }
+        let fill_rule = if non_zero { FillRule::NonZero } else { FillRule::EvenOdd };
+        check_membership(&subject, &MultiPolygon(clipping), &samples(16, 1.0, 0.0), fill_rule)?;
+    }
+
     /// An intersection copies the clipping polygons wholly inside the subject and apart from the others to its
     /// result without sweeping them (see `prune`): the result is, vertex for vertex, the one swept with the
     /// operands swapped, where nothing is copied. Clipping shapes in the cells of a grid inside a square: simple
