@@ -33,6 +33,13 @@
 //! nothing; having no edge there, it winds around nothing anywhere in the box. So where the boxes overlap, the
 //! polygons left out wind around no point, and elsewhere only one operand lost a polygon, the one whose winding
 //! number is known there from the other.
+//!
+//! Exact means here that the exact result, before it is rounded to floats, is the same: all of this, and the
+//! pruning by boxes, can change the rounding step elsewhere in the result. Whether any crossing was made at all,
+//! and which vertices came within a few ulps of which edges, are asked of the edges swept (see `sweep_once` and
+//! [`crate::connect`]), so a polygon left out (a self-crossing one, say) can switch the snapping of a close call
+//! far from it on or off, which moves a result edge by about an ulp. Either way the rounded result is valid (see
+//! the robustness page); only its last bits depend on what was swept.
 
 use crate::exact::Line;
 use crate::geometry::{open_len, orient, ring_area, MultiPolygon, Point, Polygon, Ring};
