@@ -211,58 +211,41 @@ fn ulp(v: f64) -> f64 {
 /// vertex of the result. An edge that passes that close to a crossing point crosses its edges there too, or ends
 /// there, so it has a vertex in the cluster as well; far from any cluster, rounding moves nothing across anything.
 pub(crate) fn rounding_may_matter(vertices: &[SweepPoint]) -> bool {
-    // Sweep order is x order and rounding is monotone, so the vertices of one x come together, in y order (the
-    // sweep's): in runs, found once over the whole order. Where the runs just before and after a run lie farther
-    // in x than a few ulps, a crossing in it can be near another vertex only in that run, and so only near the
-    // vertex just below or just above it (a grid's columns, most crossings of Table 1). Elsewhere the vertices
-    // near in x are searched for (see `near_another`).
-    if vertices.is_empty() {
-        return false;
-    }
-    let runs = run_starts(vertices);
+    // Sweep order is x order and rounding is monotone, so the vertices within a few ulps of a point in x are a
+    // range of the sweep order, found by galloping. A short range is scanned. In a long one (a grid's column of
+    // thousands of vertices at one x), vertices of one x come in y order (the sweep's), in runs found once over
+    // the whole order. Where the range lies in one run, the vertices nearest in y are the point's two neighbours
+    // in it; otherwise each run is searched by halving.
+    let coordinate = |j: usize, axis: usize| vertices[j].approx[axis];
+    let mut runs: Vec<usize> = Vec::new();
     let ulp = |v: f64| clearance(v.abs());
-    runs.windows(2).any(|run| {
-        let (from, to) = (run[0], run[1]);
-        if vertices[from..to].iter().all(SweepPoint::is_input) {
-            return false;
-        }
-        let x = vertices[from].approx[0];
-        let dx = ulp(x);
-        let apart = (from == 0 || vertices[from - 1].approx[0] < x - dx)
-            && (to == vertices.len() || vertices[to].approx[0] > x + dx);
-        (from..to).filter(|&i| !vertices[i].is_input()).any(|i| {
-            if !apart {
-                return near_another(vertices, &runs, i);
+    (0..vertices.len())
+        .filter(|&i| !vertices[i].is_input())
+        .any(|i| {
+            let [x, y] = vertices[i].approx;
+            let (dx, dy) = (ulp(x), ulp(y));
+            let (start, end) = within_in_x(vertices, i, dx);
+            let near_in_y = |j: usize| j != i && (coordinate(j, 1) - y).abs() <= dy;
+            if end - start <= LONG_RANGE {
+                return (start..end).any(near_in_y);
             }
-            let y = vertices[i].approx[1];
-            (i > from && y - vertices[i - 1].approx[1] <= ulp(y))
-                || (i + 1 < to && vertices[i + 1].approx[1] - y <= ulp(y))
-        })
-    })
-}
-
-/// Is a vertex other than `i` within a few ulps of it? The vertices within a few ulps in x are a range of the sweep
-/// order, found by galloping. A short range is scanned; a long one (a grid's column of thousands of vertices at
-/// one x) is searched run by run (`runs`, see [`run_starts`]), each by halving in y.
-fn near_another(vertices: &[SweepPoint], runs: &[usize], i: usize) -> bool {
-    let ulp = |v: f64| clearance(v.abs());
-    let [x, y] = vertices[i].approx;
-    let (dx, dy) = (ulp(x), ulp(y));
-    let (start, end) = within_in_x(vertices, i, dx);
-    let near_in_y = |j: usize| j != i && (vertices[j].approx[1] - y).abs() <= dy;
-    if end - start <= LONG_RANGE {
-        return (start..end).any(near_in_y);
-    }
-    let first_run = runs.partition_point(|&r| r <= start) - 1;
-    runs[first_run..]
-        .windows(2)
-        .take_while(|run| run[0] < end)
-        .any(|run| {
-            let (from, to) = (run[0].max(start), run[1].min(end));
-            let in_run = &vertices[from..to];
-            let below = from + in_run.partition_point(|v| v.approx[1] < y - dy);
-            let above = from + in_run.partition_point(|v| v.approx[1] <= y + dy);
-            (below..above).any(near_in_y)
+            if runs.is_empty() {
+                runs = run_starts(vertices);
+            }
+            let first_run = runs.partition_point(|&r| r <= start) - 1;
+            if runs[first_run + 1] >= end {
+                return (i > start && near_in_y(i - 1)) || (i + 1 < end && near_in_y(i + 1));
+            }
+            runs[first_run..]
+                .windows(2)
+                .take_while(|run| run[0] < end)
+                .any(|run| {
+                    let (from, to) = (run[0].max(start), run[1].min(end));
+                    let in_run = &vertices[from..to];
+                    let below = from + in_run.partition_point(|v| v.approx[1] < y - dy);
+                    let above = from + in_run.partition_point(|v| v.approx[1] <= y + dy);
+                    (below..above).any(near_in_y)
+                })
         })
 }
 
