@@ -172,8 +172,10 @@ fn overlay_pair(
     );
     let magnitude = subject_box.around(&clipping_box).magnitude();
     // Farther apart than rounding moves anything, twice over. Not a tolerance that decides the result: it only
-    // chooses which clipping polygons an intersection copies rather than sweeps (see `prune::copied_whole`), and
-    // errs towards sweeping; a copy is written exactly as the sweep would write it.
+    // chooses which polygons are left out or copied rather than swept, and always errs towards sweeping. A box is
+    // grown by it before it is judged (inside or outside the other operand, apart from the other boxes), so a
+    // polygon is left out or copied on a stricter test than exactness needs; the judgments themselves are exact
+    // (see `prune`), and a copy is written exactly as the sweep would write it.
     let margin = 2.0 * connect::clearance(magnitude);
     // A clipping polygon wholly outside the subject, away from its edges, cannot change an intersection or a
     // difference, nor one wholly inside it a union; an intersection copies one wholly inside it and apart from the
