@@ -328,7 +328,8 @@ impl BoxIndex {
 /// inside that polygon, a strictly convex ring without holes, and meets no other polygon's box. Throughout the grown
 /// box, then, no edge of `operand` passes and its winding number is that ring's, ±1: inside under either fill rule.
 /// A union or a difference leaves such polygons out (see `overlay_pair`). Where a box's cells hold too many others
-/// (see [`BoxIndex`]), the answer is "not inside".
+/// (see [`BoxIndex`]), or past a budget of orientation tests linear in the vertices and polygons, the answer is "not
+/// inside": the pass stays linear.
 pub(crate) fn inside_one_convex(
     operand: &MultiPolygon,
     boxes: &[Bounds],
@@ -341,6 +342,7 @@ pub(crate) fn inside_one_convex(
     };
     // Each polygon's turn, if it is a strictly convex ring without holes, worked out when first asked.
     let mut turns: Vec<Option<Option<Ordering>>> = vec![None; boxes.len()];
+    let mut orient_budget = 16 * (operand.vertex_count() + judged.len());
     for (j, b) in judged.iter().enumerate() {
         let grown = b.grown(margin);
         let mut only = None;
@@ -367,6 +369,12 @@ pub(crate) fn inside_one_convex(
         };
         let ring = &polygon.exterior;
         let n = open_len(ring);
+        // Many polygons inside one convex ring of many vertices would make this quadratic: past a few orientation
+        // tests per vertex of both operands, the rest are not left out.
+        if orient_budget < 4 * n {
+            break;
+        }
+        orient_budget -= 4 * n;
         inside[j] = grown
             .corners()
             .iter()
@@ -590,6 +598,29 @@ mod tests {
             inside_one_convex(&operand, &boxes, &judged, margin),
             expected
         );
+    }
+
+    /// A thousand small boxes inside one convex ring of a thousand vertices: testing each against every edge would be
+    /// quadratic, so past the budget the rest are answered "not inside"; the first ones are inside.
+    #[test]
+    fn stays_linear_with_many_boxes_inside_one_ring_of_many_vertices() {
+        let circle: Vec<[f64; 2]> = (0..1000)
+            .map(|i| {
+                let angle = f64::from(i) * std::f64::consts::TAU / 1000.0;
+                [100.0 * angle.cos(), 100.0 * angle.sin()]
+            })
+            .collect();
+        let operand = MultiPolygon::from_coordinates(&[vec![circle]]);
+        let boxes = vec![region_of(&operand)];
+        let judged: Vec<Bounds> = (0..1000)
+            .map(|i| {
+                let (x, y) = (f64::from(i % 40) - 20.0, f64::from(i / 40) - 12.0);
+                Bounds::at(&Point::new(x, y)).around(&Bounds::at(&Point::new(x + 0.5, y + 0.5)))
+            })
+            .collect();
+        let inside = inside_one_convex(&operand, &boxes, &judged, 1e-12);
+        let count = inside.iter().filter(|&&i| i).count();
+        assert!(count > 0 && count < 100 && inside[0], "{count}");
     }
 
     /// `apart` against comparing every pair, on boxes of a coarse lattice (many touching at a side or a corner,
