@@ -76,7 +76,6 @@ fn next_edge(
 
 /// Rings as lists of edge indices, one after the other in one vector (rather than a vector each: a result can
 /// have tens of thousands of rings).
-#[derive(Default)]
 struct Rings {
     edges: Vec<usize>,
     /// Where each ring's edges begin in `edges`, and where the last one ends.
@@ -120,7 +119,11 @@ fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge]) -> Rings 
     // Edges that rounding shrank to a point are no part of any ring.
     let mut used: Vec<bool> = edges.iter().map(|e| e.from == e.to).collect();
     let mut position_on_path = vec![NONE; vertex_count];
-    let mut rings = Rings::default();
+    // Every edge is in one ring at most: room for all, so that the vector is not copied as it grows.
+    let mut rings = Rings {
+        edges: Vec::with_capacity(edges.len()),
+        starts: Vec::new(),
+    };
     // The path walked from `start`: its vertices and edges (kept from one start to the next, for their room).
     let (mut path_vertices, mut path_edges): (Vec<u32>, Vec<usize>) = (Vec::new(), Vec::new());
     for &start in &outgoing {
@@ -466,7 +469,7 @@ pub(crate) fn connect(
             .find(|&b| b != NONE && b != r)
     };
     let mut polygon_of_ring = vec![NONE; rings.len()];
-    let mut polygons: Vec<Polygon> = Vec::new();
+    let mut polygons: Vec<Polygon> = Vec::with_capacity(rings.len());
     for (r, ring) in rings.iter().enumerate() {
         if is_shell(r as u32) && ring.len() >= 3 {
             polygon_of_ring[r] = polygons.len() as u32;

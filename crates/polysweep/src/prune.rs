@@ -159,12 +159,12 @@ pub(crate) fn copied_whole(
         })
         .collect();
     let mut copied = vec![false; clipping.0.len()];
-    let mut polygons = Vec::new();
     if !candidates.contains(&true) {
-        return (copied, polygons);
+        return (copied, Vec::new());
     }
     let listed: Vec<bool> = inside.iter().map(|&i| i != Some(false)).collect();
     let apart = apart(boxes, margin, &candidates, &listed);
+    let mut polygons = Vec::with_capacity(apart.iter().filter(|&&a| a).count());
     for (p, polygon) in clipping.0.iter().enumerate().filter(|&(p, _)| apart[p]) {
         if let Some(ring) = as_written(&polygon.exterior, margin) {
             copied[p] = true;
