@@ -11,8 +11,9 @@
 //!   edges): sub-edges made by subdivision lie exactly on it, so predicates are evaluated against input coordinates
 //!   only (see the robustness page).
 //! - The queue is the initial 2n events, sorted once and stored in that order, plus a binary heap for the events
-//!   that subdivision adds. Popping takes the smaller head, so the bulk of the work is one sort (of the ring
-//!   vertices' points by value, not through their ids), and the sweep then reads the events front to back.
+//!   that subdivision adds (a crossing's four as one entry, see `Sweep::process_crossing`). Popping takes the
+//!   smaller head, so the bulk of the work is one sort (of the ring vertices' points by value, not through their
+//!   ids), and the sweep then reads the events front to back.
 
 use crate::exact::{Exact, Line, SweepPoint};
 use crate::workspace::{take, Workspace};
@@ -361,6 +362,9 @@ pub(crate) fn initial_events(
 #[derive(Clone, Copy)]
 pub(crate) struct Head {
     pub event: EventId,
+    /// The other right event of a crossing whose four events wait as one entry (see [`Pending::partner`]), or
+    /// `NONE`.
+    pub partner: EventId,
     from_heap: bool,
 }
 
@@ -380,6 +384,10 @@ pub(crate) struct EventQueue {
 struct Pending {
     x: f64,
     event: EventId,
+    /// For the first event of a crossing in the event order, a right event, the other one: the four events of the
+    /// crossing wait as this one entry (see `Sweep::process_crossing`). `NONE` for an event on its own. (In the
+    /// room the alignment of `x` leaves.)
+    partner: EventId,
 }
 
 /// Does `a` come before `b`, by x and then by `order`?
@@ -404,9 +412,15 @@ impl EventQueue {
         self.heap.clear();
     }
 
-    /// Puts in `event`, whose point's x is `x`.
-    pub fn push(&mut self, event: EventId, x: f64, order: impl Fn(EventId, EventId) -> Ordering) {
-        self.heap.push(Pending { x, event });
+    /// Puts in `event`, whose point's x is `x`, with its `partner` (see [`Pending::partner`]; usually `NONE`).
+    pub fn push(
+        &mut self,
+        event: EventId,
+        partner: EventId,
+        x: f64,
+        order: impl Fn(EventId, EventId) -> Ordering,
+    ) {
+        self.heap.push(Pending { x, event, partner });
         let mut child = self.heap.len() - 1;
         while child > 0 {
             let parent = (child - 1) / 2;
@@ -425,15 +439,36 @@ impl EventQueue {
         order: impl Fn(EventId, EventId) -> Ordering,
     ) -> Option<Head> {
         let initial = Some(self.next_initial).filter(|&i| i < self.initial);
-        let head = |event, from_heap| Some(Head { event, from_heap });
+        let first = |i| {
+            Some(Head {
+                event: i,
+                partner: NONE,
+                from_heap: false,
+            })
+        };
+        let top = |h: &Pending| {
+            Some(Head {
+                event: h.event,
+                partner: h.partner,
+                from_heap: true,
+            })
+        };
         match (initial, self.heap.first()) {
             (None, None) => None,
-            (Some(i), None) => head(i, false),
-            (None, Some(h)) => head(h.event, true),
-            (Some(i), Some(&h)) if before(h, Pending { x: x(i), event: i }, &order) => {
-                head(h.event, true)
+            (Some(i), None) => first(i),
+            (None, Some(h)) => top(h),
+            (Some(i), Some(h)) => {
+                let next_initial = Pending {
+                    x: x(i),
+                    event: i,
+                    partner: NONE,
+                };
+                if before(*h, next_initial, &order) {
+                    top(h)
+                } else {
+                    first(i)
+                }
             }
-            (Some(i), Some(_)) => head(i, false),
         }
     }
 
@@ -442,10 +477,10 @@ impl EventQueue {
         &mut self,
         x: impl Fn(EventId) -> f64,
         order: impl Fn(EventId, EventId) -> Ordering,
-    ) -> Option<EventId> {
+    ) -> Option<Head> {
         let head = self.peek(x, &order)?;
         self.take(head, order);
-        Some(head.event)
+        Some(head)
     }
 
     /// Takes out `head`, which [`Self::peek`] has just given (nothing pushed since): the two heads are not
@@ -614,11 +649,11 @@ mod tests {
         let x = |e: EventId| f64::from(points[e as usize][0]);
         let mut queue = EventQueue::new(3);
         for e in [3, 4, 5, 6, 7] {
-            queue.push(e, x(e), order);
+            queue.push(e, NONE, x(e), order);
         }
         let mut popped = Vec::new();
-        while let Some(e) = queue.pop(x, order) {
-            popped.push(points[e as usize]);
+        while let Some(head) = queue.pop(x, order) {
+            popped.push(points[head.event as usize]);
         }
         let mut sorted = points.to_vec();
         sorted.sort();

@@ -13,6 +13,8 @@
 //!   DIFFERENT_TRANSITION. Merging them instead keeps one edge whose winding is the sum of both; the selection
 //!   rule of [`crate::select`] then yields Fig. 10 exactly, also for more than two coinciding edges and for edges
 //!   of the same operand (which cancel under even-odd).
+//! - At a proper crossing the four new events go into Q as one entry, which the sweep takes as one step where
+//!   nothing else happens at the point (see `Sweep::process_crossing`).
 //! - Every split point lies exactly on both edges' input lines (an endpoint on a line by an exact test, or an
 //!   exact crossing), so fragments never move: nothing is rounded until the output.
 
@@ -20,7 +22,7 @@ use crate::events::EventId;
 use crate::exact::SweepPoint;
 use crate::geometry::{larger, smaller};
 use crate::sweep::Sweep;
-use std::cmp::Ordering::Equal;
+use std::cmp::Ordering::{Equal, Less};
 
 impl Sweep<'_> {
     /// possibleInter (Fig. 5) of two edges, given by their nodes in S, `lower` below `upper`. It reads the nodes,
@@ -61,8 +63,7 @@ impl Sweep<'_> {
             (_, _, _, Equal) => b2,
             _ => {
                 let x = self.exact.crossing(&l1, &l2);
-                self.split(self.status.event(lower), x);
-                self.split(self.status.event(upper), x);
+                self.split_crossing(lower, upper, x);
                 return;
             }
         };
@@ -112,9 +113,36 @@ impl Sweep<'_> {
     /// Fig. 6: splits the edge of left event `edge`, which is in S, at `p`, which lies on it strictly between its
     /// endpoints.
     pub(crate) fn split(&mut self, edge: EventId, p: SweepPoint) {
-        if !self.room_for_split() {
+        if !self.room_for_events(2) {
             return;
         }
+        let new_right = self.cut(edge, p);
+        self.push(new_right);
+        self.push(new_right + 1);
+    }
+
+    /// Fig. 6 at a proper crossing `x` of the edges at nodes `lower` and `upper` of S: both are split there, and
+    /// their four new events wait in Q as one entry, the first of them in the event order, a right event (see
+    /// `Sweep::process_crossing`; not in the paper, for speed).
+    fn split_crossing(&mut self, lower: u32, upper: u32, x: SweepPoint) {
+        if !self.room_for_events(4) {
+            return;
+        }
+        let (a, b) = (
+            self.cut(self.status.event(lower), x),
+            self.cut(self.status.event(upper), x),
+        );
+        let (first, second) = match self.event_order(a, b) {
+            Less => (a, b),
+            _ => (b, a),
+        };
+        self.push_crossing(first, second);
+    }
+
+    /// The split of Fig. 6 without Q: the edge of left event `edge`, in S, ends at `p` (strictly between its
+    /// endpoints), and a new edge goes on from there. Returns the new right event, at `p`; the new left event is the
+    /// one after it.
+    fn cut(&mut self, edge: EventId, p: SweepPoint) -> EventId {
         let base = self.event(edge).clone();
         let right = base.other;
         let (new_right, new_left) = (
@@ -131,8 +159,7 @@ impl Sweep<'_> {
             "split of an edge not in S"
         );
         self.status.key_mut(base.node()).right = p;
-        self.push(new_right);
-        self.push(new_left);
+        new_right
     }
 
     /// §7.2: `merged` coincides with `keep`; `keep` takes its winding and `merged` leaves S. The flags of `keep`

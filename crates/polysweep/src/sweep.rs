@@ -23,6 +23,11 @@
 //! starts in its place in S, most vertices of real data), the new edge takes the old one's node in S instead of a
 //! removal and an insertion (see `successor_in_place`); the status and the flags come out the same.
 //!
+//! Third departure, for speed: the four events of a proper crossing of two edges wait in Q as one entry, and where
+//! nothing else happens at the crossing point the two edges simply trade places in S there (as in Bentley and
+//! Ottmann's sweep), their parts before the point ending as the paper's split would end them (see
+//! `process_crossing`).
+//!
 //! The steps taken for every event (possibleInter, `settle`, the close-call checks, the in-place step's fit test,
 //! popping Q) are `#[inline(always)]`: as calls, their arguments and results went through memory, which cost 1–3%
 //! of all instructions each (callgrind, Table 1's workloads).
@@ -100,7 +105,7 @@ pub(crate) struct Sweep<'a> {
     /// lie between input vertices): edges farther than this from a point need no closer look.
     widest_clearance: f64,
     /// The most events this sweep may make: [`MAX_EVENTS`], within which every index fits its 32 bits (smaller in
-    /// tests). A split that would pass it stops the sweep with [`Error::TooLarge`] (see `room_for_split`).
+    /// tests). A split that would pass it stops the sweep with [`Error::TooLarge`] (see `room_for_events`).
     pub max_events: usize,
     /// A split found no room under `max_events`: Q has been emptied and stays empty.
     stopped: bool,
@@ -173,20 +178,37 @@ impl<'a> Sweep<'a> {
 
     /// Puts event `e` in Q, unless the sweep has been stopped (see [`Self::max_events`]).
     pub fn push(&mut self, e: EventId) {
+        self.push_with(e, NONE);
+    }
+
+    /// Puts the four events of a crossing in Q as one entry: `first`, the first of them in the event order, with
+    /// `second`, the other right event (see [`Self::process_crossing`]).
+    pub fn push_crossing(&mut self, first: EventId, second: EventId) {
+        self.push_with(first, second);
+    }
+
+    fn push_with(&mut self, e: EventId, partner: EventId) {
         if self.stopped {
             return;
         }
-        self.queue.push(e, self.point(e).approx[0], |a, b| {
-            event_order(&self.events, self.edges, &self.exact, a, b)
-        });
+        self.queue
+            .push(e, partner, self.point(e).approx[0], |a, b| {
+                event_order(&self.events, self.edges, &self.exact, a, b)
+            });
+    }
+
+    /// The event order of `a` and `b`.
+    pub fn event_order(&self, a: EventId, b: EventId) -> Ordering {
+        event_order(&self.events, self.edges, &self.exact, a, b)
     }
 
     /// Fig. 5's main loop.
     pub fn run(&mut self) -> Result<(), Error> {
-        while let Some(e) = self.queue.pop(
+        while let Some(head) = self.queue.pop(
             |e| self.events[e as usize].point.approx[0],
             |a, b| event_order(&self.events, self.edges, &self.exact, a, b),
         ) {
+            let e = head.event;
             let point = self.point(e);
             if self
                 .exact
@@ -198,7 +220,9 @@ impl<'a> Sweep<'a> {
             self.current = point;
 
             self.assign_vertex(e);
-            if self.event(e).left() {
+            if head.partner != NONE {
+                self.process_crossing(e, head.partner);
+            } else if self.event(e).left() {
                 self.process_left(e);
             } else {
                 self.process_right(e);
@@ -212,10 +236,10 @@ impl<'a> Sweep<'a> {
         Ok(())
     }
 
-    /// Can a split add two more events? If not, the sweep stops: Q is emptied and nothing more is put in it, so
+    /// Can a split add `count` more events? If not, the sweep stops: Q is emptied and nothing more is put in it, so
     /// the loop ends once the event at hand is done (the status left as it is, and no result made).
-    pub fn room_for_split(&mut self) -> bool {
-        if self.events.len() + 2 > self.max_events {
+    pub fn room_for_events(&mut self, count: usize) -> bool {
+        if self.events.len() + count > self.max_events {
             self.stopped = true;
             self.queue.clear();
         }
@@ -427,6 +451,27 @@ impl<'a> Sweep<'a> {
         }
         let (below, above) = (self.status.prev(node), self.status.next(node));
         self.note_close_calls(&self.current.clone(), node);
+        self.end_edge(l, node);
+        if let Some(next) = self.successor_in_place(node) {
+            self.status.replace(node, next, self.in_status(next));
+            self.settle(next, node, true);
+            // Should `next` have left S again (merged into a neighbour, or put back in Q), the neighbours it
+            // separated are neighbours now, as on the ordinary path.
+            if self.event(next).node() == NONE && below != NONE && above != NONE {
+                self.possible_inter(below, above);
+            }
+            return;
+        }
+        self.status.remove(node);
+        if below != NONE && above != NONE {
+            self.possible_inter(below, above);
+        }
+    }
+
+    /// The edge of left event `l`, at `node` in S, ends at the current point: it leaves S, as a result edge if it
+    /// is one (the node stays, for the caller to remove or reuse).
+    #[inline(always)]
+    fn end_edge(&mut self, l: EventId, node: u32) {
         let edge = *self.status.key(node);
         if edge.flags.in_result {
             let (from, to) = (edge.vertex, self.current_vertex());
@@ -443,20 +488,72 @@ impl<'a> Sweep<'a> {
         } else {
             self.events[l as usize].leave_status();
         }
-        if let Some(next) = self.successor_in_place(node) {
-            self.status.replace(node, next, self.in_status(next));
-            self.settle(next, node, true);
-            // Should `next` have left S again (merged into a neighbour, or put back in Q), the neighbours it
-            // separated are neighbours now, as on the ordinary path.
-            if self.event(next).node() == NONE && below != NONE && above != NONE {
-                self.possible_inter(below, above);
+    }
+
+    /// The four events of a crossing, which wait in Q as one entry (not in the paper, for speed; see
+    /// `split_crossing`): right events `first` and `second`, where two edges end at the crossing point, each with
+    /// the left event made after it, where its edge goes on. Where nothing else happens at the point (no other
+    /// event there, and the two edges still neighbours in S), they are handled at once: both edges end, and the
+    /// parts past the point take their two nodes of S the other way round, as the four events one by one would
+    /// leave S (the edge below, the flags of Fig. 9 and the close calls come out the same; possibleInter runs for
+    /// each new pair of neighbours). Otherwise the four go into Q, to be taken one by one. At land × 32,768
+    /// squares, where every one of the 11,494 crossings is alone, this saves three heap entries, a removal and an
+    /// insertion in S, and the in-place step's checks per crossing: 10% of all instructions. Not inlined: in the
+    /// main loop it cost 0.6% more instructions at 8 squares.
+    #[inline(never)]
+    fn process_crossing(&mut self, first: EventId, second: EventId) {
+        let p = self.current;
+        let node_of = |r: EventId| self.event(self.event(r).other).node();
+        let (n1, n2) = (node_of(first), node_of(second));
+        let neighbours = if n1 == NONE || n2 == NONE {
+            None
+        } else if self.status.next(n1) == n2 {
+            Some((n1, n2))
+        } else if self.status.next(n2) == n1 {
+            Some((n2, n1))
+        } else {
+            None
+        };
+        // Nothing else at the point: no other event waits there. (Nor does another edge of S pass through it, then:
+        // it would have met one of the two, neighbours of it, at the point, and been split there.)
+        let nothing_else = || {
+            let next = self.queue.peek(
+                |e| self.events[e as usize].point.approx[0],
+                |a, b| event_order(&self.events, self.edges, &self.exact, a, b),
+            );
+            next.is_none_or(|head| {
+                self.exact.cmp_points(&self.point(head.event), &p) != Ordering::Equal
+            })
+        };
+        let alone = neighbours.filter(|_| nothing_else());
+        let Some((lower, upper)) = alone else {
+            // (`first` too, now on its own: taken again in its turn, at this point and its vertex.)
+            for e in [first, second, first + 1, second + 1] {
+                self.push(e);
             }
             return;
+        };
+        // Both edges end, in the order of their right events.
+        self.note_close_calls(&p, lower);
+        self.note_close_calls(&p, upper);
+        for (r, node) in [(first, n1), (second, n2)] {
+            self.end_edge(self.event(r).other, node);
         }
-        self.status.remove(node);
-        if below != NONE && above != NONE {
-            self.possible_inter(below, above);
-        }
+        // Past the point, the edge that was above goes on below.
+        let (lower_right, upper_right) = if lower == n1 {
+            (first, second)
+        } else {
+            (second, first)
+        };
+        let (below_next, above_next) = (upper_right + 1, lower_right + 1);
+        self.status
+            .replace(lower, below_next, self.in_status(below_next));
+        self.status
+            .replace(upper, above_next, self.in_status(above_next));
+        // (Each in its node before either is settled: settling the lower one reads the upper one's.)
+        self.events[above_next as usize].enter_status(upper);
+        self.settle(below_next, lower, true);
+        self.settle(above_next, upper, true);
     }
 
     /// A chain going on (not in the paper): when the next event is a left endpoint at this point whose edge belongs
@@ -510,6 +607,38 @@ mod tests {
     use crate::geometry::MultiPolygon;
     use crate::input::add_edges;
     use crate::select::{FillRule, Operation};
+
+    #[test]
+    fn a_crossing_is_one_step_where_nothing_else_happens_and_four_events_where_it_does() {
+        // The squares [0, 2]² and [1, 3]² cross properly at (2, 1) and (1, 2), with nothing else there: each
+        // crossing is one step. With a triangle in the clipping operand whose long edge, on y = x - 1, passes
+        // through (2, 1) too, the subject's vertical edge is split there as well: that crossing has other events at
+        // its point, and goes back to four events.
+        let square =
+            |x: f64, y: f64| vec![vec![[x, y], [x + 2.0, y], [x + 2.0, y + 2.0], [x, y + 2.0]]];
+        let triangle = vec![vec![[0.0, -1.0], [4.0, -1.0], [4.0, 3.0]]];
+        let p = MultiPolygon::from_coordinates(&[square(0.0, 0.0)]);
+        let q = MultiPolygon::from_coordinates(&[square(1.0, 1.0)]);
+        let q_and_t = MultiPolygon::from_coordinates(&[square(1.0, 1.0), triangle]);
+        let area = |operation, a: &MultiPolygon, b: &MultiPolygon| {
+            let options = crate::Options {
+                fill_rule: FillRule::EvenOdd,
+            };
+            crate::overlay(operation, a, b, &options).unwrap().area()
+        };
+        use Operation::*;
+        assert_eq!(
+            [Intersection, Union, Difference, Xor].map(|o| area(o, &p, &q)),
+            [1.0, 7.0, 3.0, 6.0]
+        );
+        // Under even-odd the clipping operand is Q ⊕ T, of area 4 + 8 - 2 · 1/2 = 11 (Q ∩ T: x from 2 to 3 below
+        // the line); P ∩ (Q ⊕ T) = P ∩ Q, 1, plus P ∩ T, 1/2 (x from 1 to 2 below the line), less twice P ∩ Q ∩ T,
+        // which has no area.
+        assert_eq!(
+            [Intersection, Union, Difference, Xor].map(|o| area(o, &p, &q_and_t)),
+            [1.5, 4.0 + 11.0 - 1.5, 4.0 - 1.5, 4.0 + 11.0 - 3.0]
+        );
+    }
 
     #[test]
     fn a_sweep_that_outgrows_its_limit_stops_with_an_error() {
