@@ -24,8 +24,8 @@
 //! removal and an insertion (see `successor_in_place`); the status and the flags come out the same.
 //!
 //! Third departure, for speed: the four events of a proper crossing of two edges wait in Q as one entry, and where
-//! nothing else happens at the crossing point the two edges simply trade places in S there (as in Bentley and
-//! Ottmann's sweep), their parts before the point ending as the paper's split would end them (see
+//! nothing else is still to happen at the crossing point the two edges simply trade places in S there (as in
+//! Bentley and Ottmann's sweep), their parts before the point ending as the paper's split would end them (see
 //! `process_crossing`).
 //!
 //! The steps taken for every event (possibleInter, `settle`, the close-call checks, the in-place step's fit test,
@@ -492,11 +492,13 @@ impl<'a> Sweep<'a> {
 
     /// The four events of a crossing, which wait in Q as one entry (not in the paper, for speed; see
     /// `split_crossing`): right events `first` and `second`, where two edges end at the crossing point, each with
-    /// the left event made after it, where its edge goes on. Where nothing else happens at the point (no other
-    /// event there, and the two edges still neighbours in S), they are handled at once: both edges end, and the
-    /// parts past the point take their two nodes of S the other way round, as the four events one by one would
-    /// leave S (the edge below, the flags of Fig. 9 and the close calls come out the same; possibleInter runs for
-    /// each new pair of neighbours). Otherwise the four go into Q, to be taken one by one. At land × 32,768
+    /// the left event made after it, where its edge goes on. Where nothing else is still to happen at the point
+    /// (no other event waits there, and the two edges are still neighbours in S), they are handled at once: both
+    /// edges end, and the parts past the point take their two nodes of S the other way round, leaving S as the
+    /// four events one by one would (the flags of Fig. 9, the result edges and the close calls come out the same;
+    /// possibleInter runs for each new pair of neighbours, not for the pairs that the one-by-one way makes only for
+    /// a moment, whose meetings are found when they are neighbours for good). Otherwise the four go into Q, to be
+    /// taken one by one. At land × 32,768
     /// squares, where every one of the 11,494 crossings is alone, this saves three heap entries, a removal and an
     /// insertion in S, and the in-place step's checks per crossing: 10% of all instructions. Not inlined: in the
     /// main loop it cost 0.6% more instructions at 8 squares.
@@ -514,8 +516,10 @@ impl<'a> Sweep<'a> {
         } else {
             None
         };
-        // Nothing else at the point: no other event waits there. (Nor does another edge of S pass through it, then:
-        // it would have met one of the two, neighbours of it, at the point, and been split there.)
+        // No other event waits at the point. (Then no other edge of S passes through it either: every edge of S
+        // between such an edge and the two lies in the wedge that they close at the point, so passes through it or
+        // ends there, and the one next to the two would have met one of them there and been split, which leaves a
+        // left event waiting at the point.)
         let nothing_else = || {
             let next = self.queue.peek(
                 |e| self.events[e as usize].point.approx[0],
@@ -550,7 +554,7 @@ impl<'a> Sweep<'a> {
             .replace(lower, below_next, self.in_status(below_next));
         self.status
             .replace(upper, above_next, self.in_status(above_next));
-        // (Each in its node before either is settled: settling the lower one reads the upper one's.)
+        // (Each in its node before either is settled, so that S and the events agree throughout.)
         self.events[above_next as usize].enter_status(upper);
         self.settle(below_next, lower, true);
         self.settle(above_next, upper, true);
