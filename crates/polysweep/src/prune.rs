@@ -618,7 +618,9 @@ mod tests {
                 Bounds::at(&Point::new(x, y)).around(&Bounds::at(&Point::new(x + 0.5, y + 0.5)))
             })
             .collect();
-        let inside = inside_one_convex(&operand, &boxes, &judged, 1e-12);
+        // The margin `overlay_pair` uses, for coordinates up to 100 (the boxes lie far inside the ring anyway).
+        let margin = 2.0 * crate::connect::clearance(100.0);
+        let inside = inside_one_convex(&operand, &boxes, &judged, margin);
         let count = inside.iter().filter(|&&i| i).count();
         assert!(count > 0 && count < 100 && inside[0], "{count}");
     }

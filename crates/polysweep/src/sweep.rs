@@ -33,8 +33,8 @@
 //! of all instructions each (callgrind, Table 1's workloads).
 
 use crate::events::{
-    event_order, far_point, initial_events, EventId, EventQueue, InputEdge, Operand, SweepEvent,
-    MAX_EVENTS, NONE,
+    event_order, far_point, initial_events, EventId, EventQueue, Head, InputEdge, Operand,
+    SweepEvent, MAX_EVENTS, NONE,
 };
 use crate::exact::{Exact, Line, SweepPoint};
 use crate::geometry::larger;
@@ -200,6 +200,14 @@ impl<'a> Sweep<'a> {
     /// The event order of `a` and `b`.
     pub fn event_order(&self, a: EventId, b: EventId) -> Ordering {
         event_order(&self.events, self.edges, &self.exact, a, b)
+    }
+
+    /// The next event of Q, without taking it.
+    fn peek(&self) -> Option<Head> {
+        self.queue.peek(
+            |e| self.events[e as usize].point.approx[0],
+            |a, b| self.event_order(a, b),
+        )
     }
 
     /// Fig. 5's main loop.
@@ -498,10 +506,9 @@ impl<'a> Sweep<'a> {
     /// four events one by one would (the flags of Fig. 9, the result edges and the close calls come out the same;
     /// possibleInter runs for each new pair of neighbours, not for the pairs that the one-by-one way makes only for
     /// a moment, whose meetings are found when they are neighbours for good). Otherwise the four go into Q, to be
-    /// taken one by one. At land × 32,768
-    /// squares, where every one of the 11,494 crossings is alone, this saves three heap entries, a removal and an
-    /// insertion in S, and the in-place step's checks per crossing: 10% of all instructions. Not inlined: in the
-    /// main loop it cost 0.6% more instructions at 8 squares.
+    /// taken one by one. At land × 32,768 squares, where every one of the 11,494 crossings is alone, this saves
+    /// three heap entries, a removal and an insertion in S, and the in-place step's checks per crossing: 10% of all
+    /// instructions. Not inlined: in the main loop it cost 0.6% more instructions at 8 squares.
     #[inline(never)]
     fn process_crossing(&mut self, first: EventId, second: EventId) {
         let p = self.current;
@@ -521,11 +528,7 @@ impl<'a> Sweep<'a> {
         // ends there, and the one next to the two would have met one of them there and been split, which leaves a
         // left event waiting at the point.)
         let nothing_else = || {
-            let next = self.queue.peek(
-                |e| self.events[e as usize].point.approx[0],
-                |a, b| event_order(&self.events, self.edges, &self.exact, a, b),
-            );
-            next.is_none_or(|head| {
+            self.peek().is_none_or(|head| {
                 self.exact.cmp_points(&self.point(head.event), &p) != Ordering::Equal
             })
         };
@@ -565,10 +568,7 @@ impl<'a> Sweep<'a> {
     /// removal, no search from the root, and no possibleInter between neighbours that would not stay neighbours.
     /// The result is the same as removing and inserting; at most vertices of a coastline, this is what happens.
     fn successor_in_place(&mut self, node: u32) -> Option<EventId> {
-        let head = self.queue.peek(
-            |e| self.events[e as usize].point.approx[0],
-            |a, b| event_order(&self.events, self.edges, &self.exact, a, b),
-        )?;
+        let head = self.peek()?;
         let next = head.event;
         let event = self.event(next);
         if !event.left() || self.exact.cmp_points(&event.point, &self.current) != Ordering::Equal {
