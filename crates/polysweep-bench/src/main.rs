@@ -1,7 +1,7 @@
 //! The paper's Table 1 on real data, native: Natural Earth land (59,212 vertices) against grids of N squares,
 //! polysweep beside i_overlay, geo's BooleanOps and Clipper2 (the C++ library through the `clipper2` crate), in one
 //! process and one run. Each engine gets its input already in its own types; the time is the operation alone.
-//! Warm-up once, then several runs taken in turns with the other engines; medians. Result areas are checked against
+//! Warm-up once, then several runs taken in rounds, each round a run of every engine at every size; medians. Result areas are checked against
 //! each other and against the reference areas of tests/data/README.md. Also the floor: sorting the 2n event points.
 //!
 //! Writes target/bench/native.json, and the square grids of every N as GeoJSON (target/bench/squares-N.json) for
@@ -81,21 +81,23 @@ fn squares(n: usize) -> Coordinates {
         .collect()
 }
 
-/// Timed runs of each engine: a warm-up each (which gives the result area), then the runs in rounds, one of every
-/// engine per round, so that a change in the machine's speed over the seconds of a workload falls on all engines
-/// alike. Each round starts one engine further on, so that no engine always runs after the same one (and finds the
-/// caches and the allocator as that one left them). Returns each engine's times, sorted, and area.
-fn timed_rounds(engines: &mut [&mut dyn FnMut() -> f64]) -> Vec<(Vec<f64>, f64)> {
-    let areas: Vec<f64> = engines.iter_mut().map(|run| run()).collect();
-    let runs = std::env::var("BENCH_RUNS")
+/// Timed runs of every engine on every workload: a warm-up each (which gives the result area), then the runs in
+/// rounds, one of every engine on every workload per round, so that a change in the machine's speed (this one has
+/// slow phases of several seconds) falls on all engines and all sizes alike: taken workload by workload instead, a
+/// slow phase that fell on one size moved the scaling slopes of all engines by more than their difference. Each
+/// round starts one run further on, so that no run always comes after the same one (and finds the caches and the
+/// allocator as that one left them). Returns each run's times, sorted, and area.
+fn timed_rounds(runs: &mut [Run]) -> Vec<(Vec<f64>, f64)> {
+    let areas: Vec<f64> = runs.iter_mut().map(|r| (r.engine)()).collect();
+    let rounds = std::env::var("BENCH_RUNS")
         .map_or(RUNS, |r| r.parse().expect("BENCH_RUNS: a number of runs"));
-    let mut times = vec![Vec::with_capacity(runs); engines.len()];
-    for round in 0..runs.max(1) {
-        for turn in 0..engines.len() {
-            let engine = (round + turn) % engines.len();
+    let mut times = vec![Vec::with_capacity(rounds); runs.len()];
+    for round in 0..rounds.max(1) {
+        for turn in 0..runs.len() {
+            let run = (round + turn) % runs.len();
             let start = Instant::now();
-            std::hint::black_box(engines[engine]());
-            times[engine].push(start.elapsed().as_secs_f64() * 1e3);
+            std::hint::black_box((runs[run].engine)());
+            times[run].push(start.elapsed().as_secs_f64() * 1e3);
         }
     }
     for t in &mut times {
@@ -184,26 +186,33 @@ impl Filter {
 /// One engine's run of a workload, returning the result's area.
 type Engine<'a> = Box<dyn FnMut() -> f64 + 'a>;
 
-/// Runs every engine on one workload, and with the intersection the sort floor (see `main`) in the same rounds, so
-/// that the floor and the engines meet the machine's slow and fast phases alike.
-fn run_all(
-    operation: &str,
-    land: &Inputs,
-    clip: &Inputs,
+/// A timed run: an engine (or the sort floor, `floor`) on one workload.
+struct Run<'a> {
+    name: &'static str,
+    operation: &'static str,
+    squares: usize,
+    engine: Engine<'a>,
+}
+
+/// The runs of one workload: every engine the filter names, and the sort floor (see `main`), each timed in the same
+/// rounds as all the others (see [`timed_rounds`]), so that the floor and the engines meet the machine's slow and
+/// fast phases alike.
+fn workload<'a>(
+    operation: &'static str,
+    land: &'a Inputs,
+    clip: &'a Inputs,
     n: usize,
     filter: &Filter,
-    out: &mut Vec<Value>,
-    floors: &mut Vec<Value>,
-) {
+) -> Vec<Run<'a>> {
     let op = match operation {
         "intersection" => (Operation::Intersection, OverlayRule::Intersect),
         "union" => (Operation::Union, OverlayRule::Union),
         _ => (Operation::Difference, OverlayRule::Difference),
     };
-    let engines: Vec<(&str, Engine)> = vec![
+    let engines: Vec<(&'static str, Engine<'a>)> = vec![
         (
             "polysweep",
-            Box::new(|| {
+            Box::new(move || {
                 polysweep::overlay(op.0, &land.ours, &clip.ours, &Options::default())
                     .unwrap()
                     .area()
@@ -211,7 +220,7 @@ fn run_all(
         ),
         (
             "i_overlay",
-            Box::new(|| {
+            Box::new(move || {
                 let shapes = land.shapes.overlay(&clip.shapes, op.1, IFillRule::EvenOdd);
                 shapes
                     .iter()
@@ -223,7 +232,7 @@ fn run_all(
         ),
         (
             "geo",
-            Box::new(|| match operation {
+            Box::new(move || match operation {
                 "intersection" => land.geo.intersection(&clip.geo).unsigned_area(),
                 "union" => land.geo.union(&clip.geo).unsigned_area(),
                 _ => land.geo.difference(&clip.geo).unsigned_area(),
@@ -231,7 +240,7 @@ fn run_all(
         ),
         (
             "clipper2",
-            Box::new(|| {
+            Box::new(move || {
                 let c = clipper2::Clipper::new()
                     .add_subject(land.clipper.clone())
                     .add_clip(clip.clipper.clone());
@@ -245,8 +254,8 @@ fn run_all(
         ),
     ];
     // The floor: sorting the 2n endpoints of the edges, as the event queue's initial sort does. The same inputs give
-    // the same floor for union and difference, but it is timed in their rounds too, so that each ratio to it
-    // compares times taken in the same stretch of this noisy machine's time.
+    // the same floor for the three operations at 3,895 squares; it is timed for each all the same, so that each
+    // ratio to it has a floor of its own (and the three show the noise).
     let points: Vec<[f64; 2]> = if filter.engine("floor") {
         (land.shapes.iter().chain(&clip.shapes))
             .flatten()
@@ -257,30 +266,23 @@ fn run_all(
     };
     // Copied into the same vector every run, as polysweep keeps its vectors from one operation to the next: a
     // fresh copy would add the page faults of new memory, which are not the sort's.
-    let (points, mut sorted) = (&points, points.clone());
-    let floor: Engine = Box::new(move || {
-        sorted.copy_from_slice(points);
+    let mut sorted = points.clone();
+    let has_floor = !points.is_empty();
+    let floor: Engine<'a> = Box::new(move || {
+        sorted.copy_from_slice(&points);
         sorted.sort_unstable_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
         sorted[0][0]
     });
-    let floor = (!points.is_empty()).then_some(("floor", floor));
-    let (names, mut runs): (Vec<&str>, Vec<Engine>) = (engines.into_iter().chain(floor))
+    let floor = has_floor.then_some(("floor", floor));
+    (engines.into_iter().chain(floor))
         .filter(|(e, _)| filter.engine(e))
-        .unzip();
-    let mut runs: Vec<&mut dyn FnMut() -> f64> = runs.iter_mut().map(|r| &mut **r as _).collect();
-    for (engine, (times, area)) in names.into_iter().zip(timed_rounds(&mut runs)) {
-        let (ms, fastest) = (times[times.len() / 2], times[0]);
-        if engine == "floor" {
-            println!(
-                "{:>12} {n:>6} squares  {:<10} {ms:>9.2} ms",
-                "sort floor", operation
-            );
-            floors.push(json!({ "squares": n, "operation": operation, "median_ms": ms }));
-            continue;
-        }
-        println!("{operation:>12} {n:>6} squares  {engine:<10} {ms:>9.2} ms  (fastest {fastest:>8.2})  area {area:.6}");
-        out.push(json!({ "engine": engine, "operation": operation, "squares": n, "median_ms": ms, "area": area }));
-    }
+        .map(|(name, engine)| Run {
+            name,
+            operation,
+            squares: n,
+            engine,
+        })
+        .collect()
 }
 
 fn main() {
@@ -296,43 +298,47 @@ fn main() {
     sizes.sort();
     sizes.dedup();
     sizes.retain(|&n| filter.size(n));
-    let mut runs = Vec::new();
-    let mut floor = Vec::new();
-    for &n in &sizes {
-        // The paper's grids are the shipped files; the rest of the series is generated by the same rule.
-        let shipped = data.join(format!("squares-{n}.json.gz"));
-        let grid = if shipped.exists() {
-            coordinates(&read_gz(&shipped))
-        } else {
-            squares(n)
-        };
-        std::fs::write(
-            out_dir.join(format!("squares-{n}.json")),
-            json!({ "type": "MultiPolygon", "coordinates": grid }).to_string(),
-        )
-        .unwrap();
-        let clip = Inputs::new(grid);
-        run_all(
-            "intersection",
-            &land,
-            &clip,
-            n,
-            &filter,
-            &mut runs,
-            &mut floor,
-        );
-        if n == 3895 {
-            run_all("union", &land, &clip, n, &filter, &mut runs, &mut floor);
-            run_all(
-                "difference",
-                &land,
-                &clip,
-                n,
-                &filter,
-                &mut runs,
-                &mut floor,
-            );
+    let grids: Vec<(usize, Inputs)> = sizes
+        .iter()
+        .map(|&n| {
+            // The paper's grids are the shipped files; the rest of the series is generated by the same rule.
+            let shipped = data.join(format!("squares-{n}.json.gz"));
+            let grid = if shipped.exists() {
+                coordinates(&read_gz(&shipped))
+            } else {
+                squares(n)
+            };
+            std::fs::write(
+                out_dir.join(format!("squares-{n}.json")),
+                json!({ "type": "MultiPolygon", "coordinates": grid }).to_string(),
+            )
+            .unwrap();
+            (n, Inputs::new(grid))
+        })
+        .collect();
+    let mut timed: Vec<Run> = Vec::new();
+    for (n, clip) in &grids {
+        timed.extend(workload("intersection", &land, clip, *n, &filter));
+        if *n == 3895 {
+            timed.extend(workload("union", &land, clip, *n, &filter));
+            timed.extend(workload("difference", &land, clip, *n, &filter));
         }
+    }
+    let (mut runs, mut floor) = (Vec::new(), Vec::new());
+    let results = timed_rounds(&mut timed);
+    for (run, (times, area)) in timed.iter().zip(results) {
+        let (ms, fastest) = (times[times.len() / 2], times[0]);
+        let (engine, operation, n) = (run.name, run.operation, run.squares);
+        if engine == "floor" {
+            println!(
+                "{:>12} {n:>6} squares  {operation:<10} {ms:>9.2} ms",
+                "sort floor"
+            );
+            floor.push(json!({ "squares": n, "operation": operation, "median_ms": ms }));
+            continue;
+        }
+        println!("{operation:>12} {n:>6} squares  {engine:<10} {ms:>9.2} ms  (fastest {fastest:>8.2})  area {area:.6}");
+        runs.push(json!({ "engine": engine, "operation": operation, "squares": n, "median_ms": ms, "area": area }));
     }
     for (n, reference) in REFERENCE {
         for run in runs
