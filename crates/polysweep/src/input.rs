@@ -40,8 +40,11 @@ pub(crate) fn check(index: usize, operand: &MultiPolygon) -> Result<Vec<Bounds>,
 /// Is `value` a coordinate the exact predicates' proofs cover: finite, and 0 or of a magnitude within
 /// [`MIN_COORDINATE`]..=[`MAX_COORDINATE`]?
 fn is_accepted(value: f64) -> bool {
-    let magnitude = value.abs();
-    magnitude == 0.0 || (MIN_COORDINATE..=MAX_COORDINATE).contains(&magnitude)
+    // On the bits of the magnitude, which order non-negative floats as their values (NaNs above infinity): 0, or
+    // within the range by one unsigned comparison.
+    let magnitude = value.to_bits() & !(1 << 63);
+    let (min, max) = (MIN_COORDINATE.to_bits(), MAX_COORDINATE.to_bits());
+    magnitude == 0 || magnitude.wrapping_sub(min) <= max - min
 }
 
 /// The error for the first coordinate of polygon `p` (number `polygon` of operand `index`) that [`is_accepted`]
@@ -252,9 +255,8 @@ impl Grid {
         sums
     }
 
-    /// How many marked cells, by `sums` (see [`Self::rectangle_sums`]), lie in the cells that box `b` touches.
-    pub fn marked_in(&self, sums: &[u32], b: &Bounds) -> u32 {
-        let [[c0, c1], [r0, r1]] = self.range(b);
+    /// How many marked cells, by `sums` (see [`Self::rectangle_sums`]), lie in `range` (see [`Self::range`]).
+    pub fn marked_in(&self, sums: &[u32], [[c0, c1], [r0, r1]]: [[usize; 2]; 2]) -> u32 {
         let width = self.cells + 1;
         sums[(r1 + 1) * width + c1 + 1] + sums[r0 * width + c0]
             - sums[r0 * width + c1 + 1]
@@ -297,7 +299,7 @@ impl Coverage {
 
     /// Could `b` meet one of the boxes? `false` only if it meets none.
     pub fn may_meet(&self, b: &Bounds) -> bool {
-        b.meets(&self.grid.region) && self.grid.marked_in(&self.touched, b) > 0
+        b.meets(&self.grid.region) && self.grid.marked_in(&self.touched, self.grid.range(b)) > 0
     }
 }
 
@@ -315,7 +317,8 @@ pub(crate) fn add_edges(
     for ring in kept.flat_map(|(_, p)| p.rings()) {
         let n = open_len(ring);
         for i in 0..n {
-            let (from, to) = (ring[i], ring[(i + 1) % n]);
+            // (The next vertex without `% n`, a division per edge.)
+            let (from, to) = (ring[i], ring[if i + 1 < n { i + 1 } else { 0 }]);
             if from == to {
                 continue;
             }
@@ -391,6 +394,33 @@ mod tests {
         let polygon: Vec<Vec<[f64; 2]>> = rings.iter().map(|r| r.to_vec()).collect();
         let square = vec![vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]];
         MultiPolygon::from_coordinates(&[square, polygon])
+    }
+
+    #[test]
+    fn coordinates_are_accepted_exactly_within_the_range_and_at_its_ends() {
+        let (above, below) = (MAX_COORDINATE.next_up(), MIN_COORDINATE.next_down());
+        for (value, accepted) in [
+            (0.0, true),
+            (-0.0, true),
+            (1.0, true),
+            (-1.5, true),
+            (MIN_COORDINATE, true),
+            (-MIN_COORDINATE, true),
+            (MAX_COORDINATE, true),
+            (-MAX_COORDINATE, true),
+            (above, false),
+            (-above, false),
+            (below, false),
+            (-below, false),
+            (f64::MIN_POSITIVE / 4.0, false), // subnormal
+            (f64::MAX, false),
+            (f64::INFINITY, false),
+            (f64::NEG_INFINITY, false),
+            (f64::NAN, false),
+            (-f64::NAN, false),
+        ] {
+            assert_eq!(is_accepted(value), accepted, "{value:e}");
+        }
     }
 
     #[test]

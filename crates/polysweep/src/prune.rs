@@ -125,10 +125,14 @@ impl KnownWinding {
         if !b.meets(region) {
             return Some(0); // every ring lies within the region
         }
-        if !b.within(region) || self.grid.marked_in(&self.unknown, b) > 0 {
+        if !b.within(region) {
             return None;
         }
-        let [[c, _], [r, _]] = self.grid.range(b);
+        let range = self.grid.range(b);
+        if self.grid.marked_in(&self.unknown, range) > 0 {
+            return None;
+        }
+        let [[c, _], [r, _]] = range;
         Some(self.winding[r * self.grid.cells + c])
     }
 }
@@ -162,7 +166,9 @@ pub(crate) fn copied_whole(
     if !candidates.contains(&true) {
         return (copied, Vec::new());
     }
-    let listed: Vec<bool> = inside.iter().map(|&i| i != Some(false)).collect();
+    let listed: Vec<u32> = (0..inside.len() as u32)
+        .filter(|&p| inside[p as usize] != Some(false))
+        .collect();
     let apart = apart(boxes, margin, &candidates, &listed);
     let mut polygons = Vec::with_capacity(apart.iter().filter(|&&a| a).count());
     for (p, polygon) in clipping.0.iter().enumerate().filter(|&(p, _)| apart[p]) {
@@ -223,7 +229,8 @@ fn vertex_near_an_edge(ring: &[Point], margin: f64) -> bool {
             a: [a.x, a.y],
             b: [b.x, b.y],
         };
-        (0..n).filter(|&v| v != e && v != (e + 1) % n).any(|v| {
+        let next = if e + 1 < n { e + 1 } else { 0 };
+        (0..n).filter(|&v| v != e && v != next).any(|v| {
             Bounds::at(&ring[v]).meets(&around) && line.float_within([ring[v].x, ring[v].y], near)
         })
     })
@@ -245,29 +252,24 @@ struct BoxIndex {
 }
 
 impl BoxIndex {
-    /// The boxes of `boxes` that `listed` names, each grown by `margin`; `None` where they would touch too many
-    /// cells (see [`CELLS_PER_BOX`]), so that making it stays linear in the boxes.
-    fn new(boxes: &[Bounds], listed: &[bool], margin: f64) -> Option<Self> {
-        let listed_boxes: Vec<Bounds> = (boxes.iter().zip(listed))
-            .filter(|&(_, &listed)| listed)
-            .map(|(b, _)| *b)
-            .collect();
-        let grid = Grid::new(
-            Bounds::around_all(&listed_boxes),
-            Grid::side_for(listed_boxes.len()),
-        );
+    /// The boxes of `boxes` that `listed` names (by index), each grown by `margin`; `None` where they would touch
+    /// too many cells (see [`CELLS_PER_BOX`]), so that making it stays linear in the boxes.
+    fn new(boxes: &[Bounds], listed: &[u32], margin: f64) -> Option<Self> {
+        let region = (listed.iter()).fold(Bounds::EMPTY, |r, &i| r.around(&boxes[i as usize]));
+        let grid = Grid::new(region, Grid::side_for(listed.len()));
         // The cells of each listed box grown by `margin`; none for an empty box (of a polygon without vertices),
         // which meets nothing.
-        let ranges: Vec<[[usize; 2]; 2]> = (boxes.iter().zip(listed))
-            .map(|(b, &listed)| {
-                if listed && b.meets(&grid.region) {
+        let ranges: Vec<[[usize; 2]; 2]> = (listed.iter())
+            .map(|&i| {
+                let b = &boxes[i as usize];
+                if b.meets(&grid.region) {
                     grid.range(&b.grown(margin))
                 } else {
                     [[1, 0], [1, 0]]
                 }
             })
             .collect();
-        let (budget, mut cells_listed) = (CELLS_PER_BOX * listed_boxes.len(), 0);
+        let (budget, mut cells_listed) = (CELLS_PER_BOX * listed.len(), 0);
         for [[c0, c1], [r0, r1]] in &ranges {
             // (Counted box by box, checked as it goes: the sum of all could overflow a 32-bit `usize`.)
             cells_listed += (c1 + 1).saturating_sub(*c0) * (r1 + 1).saturating_sub(*r0);
@@ -290,10 +292,10 @@ impl BoxIndex {
             starts[cell + 1] += starts[cell];
         }
         let (mut members, mut next) = (vec![0u32; cells_listed], starts.clone());
-        for (i, &[[c0, c1], [r0, r1]]) in ranges.iter().enumerate() {
+        for (&i, &[[c0, c1], [r0, r1]]) in listed.iter().zip(&ranges) {
             for r in r0..=r1 {
                 for slot in &mut next[r * width + c0..=r * width + c1] {
-                    members[*slot] = i as u32;
+                    members[*slot] = i;
                     *slot += 1;
                 }
             }
@@ -337,7 +339,8 @@ pub(crate) fn inside_one_convex(
     margin: f64,
 ) -> Vec<bool> {
     let mut inside = vec![false; judged.len()];
-    let Some(index) = BoxIndex::new(boxes, &vec![true; boxes.len()], margin) else {
+    let all: Vec<u32> = (0..boxes.len() as u32).collect();
+    let Some(index) = BoxIndex::new(boxes, &all, margin) else {
         return inside;
     };
     // Each polygon's turn, if it is a strictly convex ring without holes, worked out when first asked.
@@ -375,18 +378,17 @@ pub(crate) fn inside_one_convex(
             break;
         }
         orient_budget -= 4 * n;
-        inside[j] = grown
-            .corners()
-            .iter()
-            .all(|&c| (0..n).all(|i| orient(ring[i], ring[(i + 1) % n], c) == turn));
+        inside[j] = grown.corners().iter().all(|&c| {
+            (0..n).all(|i| orient(ring[i], ring[if i + 1 < n { i + 1 } else { 0 }], c) == turn)
+        });
     }
     inside
 }
 
 /// Which of the boxes that `asked` names are farther than `margin` from every other box of `boxes` that `listed`
-/// names (which names the asked ones too). Where the boxes touch too many cells of a [`BoxIndex`], or a box's cells
+/// names by index (which names the asked ones too). Where the boxes touch too many cells of a [`BoxIndex`], or a box's cells
 /// hold too many others, the answer is "not apart": the pass stays linear in the boxes.
-fn apart(boxes: &[Bounds], margin: f64, asked: &[bool], listed: &[bool]) -> Vec<bool> {
+fn apart(boxes: &[Bounds], margin: f64, asked: &[bool], listed: &[u32]) -> Vec<bool> {
     let mut apart = vec![false; boxes.len()];
     let Some(index) = BoxIndex::new(boxes, listed, margin) else {
         return apart;
@@ -646,13 +648,16 @@ mod tests {
                 })
                 .collect();
             let asked: Vec<bool> = (0..count).map(|i| i % 3 != 2).collect();
-            let listed: Vec<bool> = (0..count).map(|i| asked[i] || i % 4 != 3).collect();
+            let is_listed = |i: usize| asked[i] || i % 4 != 3;
+            let listed: Vec<u32> = (0..count as u32)
+                .filter(|&i| is_listed(i as usize))
+                .collect();
             let found = apart(&boxes, margin, &asked, &listed);
             for (p, b) in boxes.iter().enumerate() {
                 let grown = b.grown(margin);
                 let expected = asked[p]
                     && (boxes.iter().enumerate())
-                        .all(|(q, c)| q == p || !listed[q] || !c.meets(&grown));
+                        .all(|(q, c)| q == p || !is_listed(q) || !c.meets(&grown));
                 assert_eq!(found[p], expected, "box {p} of {count}: {b:?}");
                 (told, asked_in_all) = (
                     told + usize::from(expected),

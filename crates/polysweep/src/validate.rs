@@ -181,7 +181,8 @@ pub(crate) fn convex_turn(ring: &[Point]) -> Option<Ordering> {
         .len()
         .checked_sub(1)
         .filter(|&n| n >= 3 && ring[0] == ring[n])?;
-    let at = |i: usize| ring[i % n];
+    // (Every index below is at most n, and `ring[n]` is `ring[0]`: no `% n`, a division per vertex.)
+    let at = |i: usize| ring[i];
     let turn = orient(at(n - 1), at(0), at(1));
     let x_direction = |i: usize| at(i + 1).x.partial_cmp(&at(i).x);
     let mut last_direction = (0..n)
