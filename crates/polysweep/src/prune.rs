@@ -62,11 +62,15 @@ impl KnownWinding {
     pub fn new(operand: &MultiPolygon, region: Bounds, cells: usize) -> Self {
         let grid = Grid::new(region, cells);
         let n = grid.cells;
-        // Each row's line, where one lies strictly inside the row (a row of a degenerate grid may have none).
-        let lines: Vec<Option<f64>> = (0..n)
+        // Each row's line, where one lies strictly inside the row (a row of a degenerate grid may have none: NaN).
+        let lines: Vec<f64> = (0..n)
             .map(|r| {
                 let y = region.min(1) + (r as f64 + 0.5) / grid.scale(1);
-                (y.is_finite() && grid.cell(y, 1) == r).then_some(y)
+                if y.is_finite() && grid.cell(y, 1) == r {
+                    y
+                } else {
+                    f64::NAN
+                }
             })
             .collect();
         let (mut touches, mut winding) = (grid.difference_table(), vec![0i32; n * n]);
@@ -81,15 +85,16 @@ impl KnownWinding {
             // of a coordinate is monotone in it).
             let cell = |p: Point| [grid.cell(p.x, 0), grid.cell(p.y, 1)];
             let (mut a, [mut ca, mut ra]) = (last, cell(last));
-            let mut counted = None;
+            let mut counted = [[usize::MAX; 2]; 2];
             for &b in ring {
                 let [cb, rb] = cell(b);
-                let ([c0, c1], [r0, r1]) = ([ca.min(cb), ca.max(cb)], [ra.min(rb), ra.max(rb)]);
+                let range = [[ca.min(cb), ca.max(cb)], [ra.min(rb), ra.max(rb)]];
                 // (Most edges are short: one after another in one cell, which is counted once.)
-                if counted != Some([[c0, c1], [r0, r1]]) {
-                    grid.count_range(&mut touches, [[c0, c1], [r0, r1]]);
-                    counted = Some([[c0, c1], [r0, r1]]);
+                if counted != range {
+                    grid.count_range(&mut touches, range);
+                    counted = range;
                 }
+                let [[_, c1], [r0, r1]] = range;
                 steps += r1 - r0 + 1;
                 if steps > budget {
                     return KnownWinding {
@@ -99,11 +104,14 @@ impl KnownWinding {
                     };
                 }
                 // Where the edge crosses a row's line, it adds its direction to the cells right of its right
-                // end's column: differences along each row, summed below.
-                for (r, line) in lines.iter().enumerate().take(r1 + 1).skip(r0) {
-                    let Some(y) = *line else { continue };
-                    if (a.y < y) != (b.y < y) && c1 + 1 < n {
-                        winding[r * n + c1 + 1] += if b.y < a.y { 1 } else { -1 };
+                // end's column: differences along each row, summed below. (A row without a line has NaN, which
+                // no edge crosses.)
+                if c1 + 1 < n {
+                    let direction = if b.y < a.y { 1 } else { -1 };
+                    for (r, &y) in lines[r0..=r1].iter().enumerate() {
+                        if (a.y < y) != (b.y < y) {
+                            winding[(r0 + r) * n + c1 + 1] += direction;
+                        }
                     }
                 }
                 (a, ca, ra) = (b, cb, rb);
@@ -111,7 +119,7 @@ impl KnownWinding {
         }
         let touches = grid.counts(touches);
         winding.chunks_exact_mut(n).for_each(running_sums);
-        let unknown = grid.rectangle_sums(|r, c| lines[r].is_none() || touches[r * n + c] > 0);
+        let unknown = grid.rectangle_sums(|r, c| lines[r].is_nan() || touches[r * n + c] > 0);
         KnownWinding {
             grid,
             winding,
@@ -252,8 +260,9 @@ struct BoxIndex {
 }
 
 impl BoxIndex {
-    /// The boxes of `boxes` that `listed` names (by index), each grown by `margin`; `None` where they would touch
-    /// too many cells (see [`CELLS_PER_BOX`]), so that making it stays linear in the boxes.
+    /// The boxes of `boxes` that `listed` names (by index, in ascending order, which each cell's list keeps), each
+    /// grown by `margin`; `None` where they would touch too many cells (see [`CELLS_PER_BOX`]), so that making it
+    /// stays linear in the boxes.
     fn new(boxes: &[Bounds], listed: &[u32], margin: f64) -> Option<Self> {
         let region = (listed.iter()).fold(Bounds::EMPTY, |r, &i| r.around(&boxes[i as usize]));
         let grid = Grid::new(region, Grid::side_for(listed.len()));
@@ -386,8 +395,9 @@ pub(crate) fn inside_one_convex(
 }
 
 /// Which of the boxes that `asked` names are farther than `margin` from every other box of `boxes` that `listed`
-/// names by index (which names the asked ones too). Where the boxes touch too many cells of a [`BoxIndex`], or a box's cells
-/// hold too many others, the answer is "not apart": the pass stays linear in the boxes.
+/// names by index, in ascending order (it names the asked ones too). Where the boxes touch too many cells of a
+/// [`BoxIndex`], or a box's cells hold too many others, the answer is "not apart": the pass stays linear in the
+/// boxes.
 fn apart(boxes: &[Bounds], margin: f64, asked: &[bool], listed: &[u32]) -> Vec<bool> {
     let mut apart = vec![false; boxes.len()];
     let Some(index) = BoxIndex::new(boxes, listed, margin) else {
