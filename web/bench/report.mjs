@@ -368,7 +368,7 @@ function markdown(native, wasm, targets, args) {
     parts.push(perfSection({
       title: 'Intersection series, union and difference at ' + FULL_N, data: native, peers: enginesOf(native, NATIVE_PEERS).filter((e) => e !== 'polysweep'),
       info: [], floor, workloads: workloadsIn(native),
-      note: 'One process (crates/polysweep-bench). Sort floor: the time to sort the workload\'s 2n event points, timed in the same rounds as the engines of each workload (the same inputs, so the same floor in principle, for ∩, ∪ and − at ' + FULL_N + ', but each timed in its own rounds).',
+      note: 'One process (crates/polysweep-bench). Every round takes every engine at every size, in a shuffled order, each timed run right after a warm-up run of the same, so that a slow phase of the machine falls on all sizes alike. Sort floor: the time to sort the workload\'s 2n event points, timed in the same rounds (the same inputs, so the same floor in principle, for ∩, ∪ and − at ' + FULL_N + ', but each timed as a run of its own).',
     }), '');
   } else parts.push('native.json missing: run the native benchmark (crates/polysweep-bench).', '');
 

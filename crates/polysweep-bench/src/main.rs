@@ -1,8 +1,9 @@
 //! The paper's Table 1 on real data, native: Natural Earth land (59,212 vertices) against grids of N squares,
 //! polysweep beside i_overlay, geo's BooleanOps and Clipper2 (the C++ library through the `clipper2` crate), in one
 //! process and one run. Each engine gets its input already in its own types; the time is the operation alone.
-//! Warm-up once, then several runs taken in rounds, each round a run of every engine at every size; medians. Result areas are checked against
-//! each other and against the reference areas of tests/data/README.md. Also the floor: sorting the 2n event points.
+//! Several runs taken in rounds, each round a run of every engine at every size in a shuffled order, each right
+//! after a warm-up run; medians. Result areas are checked against each other and against the reference areas of
+//! tests/data/README.md. Also the floor: sorting the 2n event points.
 //!
 //! Writes target/bench/native.json, and the square grids of every N as GeoJSON (target/bench/squares-N.json) for
 //! the wasm benchmark (web/bench/wasm.mjs). `cargo run --release -p polysweep-bench`.
@@ -81,20 +82,33 @@ fn squares(n: usize) -> Coordinates {
         .collect()
 }
 
-/// Timed runs of every engine on every workload: a warm-up each (which gives the result area), then the runs in
-/// rounds, one of every engine on every workload per round, so that a change in the machine's speed (this one has
-/// slow phases of several seconds) falls on all engines and all sizes alike: taken workload by workload instead, a
-/// slow phase that fell on one size moved the scaling slopes of all engines by more than their difference. Each
-/// round starts one run further on, so that no run always comes after the same one (and finds the caches and the
-/// allocator as that one left them). Returns each run's times, sorted, and area.
+/// Timed runs of every engine on every workload, in rounds: each round takes every engine on every workload, in
+/// an order of its own (shuffled, from a fixed seed), and times each run right after a warm-up run of the same, so
+/// that it finds its own data in the caches, as after the warm-up the method asks for, and not another engine's
+/// (after Clipper2 at 32,768 squares, say, which goes through hundreds of megabytes). Taken in rounds, a change in
+/// the machine's speed (this one has slow phases of several seconds) falls on all engines and all sizes alike:
+/// taken workload by workload instead, a slow phase that fell on one size moved the scaling slopes of all engines
+/// by more than their difference. Returns each run's times, sorted, and area (of the first warm-up).
 fn timed_rounds(runs: &mut [Run]) -> Vec<(Vec<f64>, f64)> {
     let areas: Vec<f64> = runs.iter_mut().map(|r| (r.engine)()).collect();
     let rounds = std::env::var("BENCH_RUNS")
         .map_or(RUNS, |r| r.parse().expect("BENCH_RUNS: a number of runs"));
     let mut times = vec![Vec::with_capacity(rounds); runs.len()];
-    for round in 0..rounds.max(1) {
-        for turn in 0..runs.len() {
-            let run = (round + turn) % runs.len();
+    let mut order: Vec<usize> = (0..runs.len()).collect();
+    // xorshift64: any fixed sequence of shuffles will do, the same in every benchmark run.
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut random = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
+    };
+    for _ in 0..rounds.max(1) {
+        for i in (1..order.len()).rev() {
+            order.swap(i, (random() % (i as u64 + 1)) as usize);
+        }
+        for &run in &order {
+            std::hint::black_box((runs[run].engine)());
             let start = Instant::now();
             std::hint::black_box((runs[run].engine)());
             times[run].push(start.elapsed().as_secs_f64() * 1e3);
