@@ -448,6 +448,15 @@ impl<'a> Sweep<'a> {
         }
         self.set_flags(node);
 
+        // (Nothing since the caller chose `meets_only_here` has inserted into S, so its index still names that edge,
+        // or none.)
+        debug_assert!(
+            meets_only_here == NONE
+                || self
+                    .exact
+                    .cmp_points(&self.status.key(meets_only_here).left, &p)
+                    == Ordering::Equal
+        );
         if below != NONE && below != meets_only_here {
             self.possible_inter(below, node);
         }
@@ -549,9 +558,10 @@ impl<'a> Sweep<'a> {
             }
             return;
         };
-        // Both edges end, in the order of their right events. (Each is the other's neighbour, but ends at `p`: no
-        // close call there, and only the edges below and above the pair are asked.)
+        // Close calls: each of the two is the other's neighbour, but ends at `p`, which is no close call; only the
+        // edges below and above the pair are asked.
         self.note_close_calls_of(&p, [self.status.prev(lower), self.status.next(upper)]);
+        // Both edges end, in the order of their right events.
         for (r, node) in [(first, n1), (second, n2)] {
             self.end_edge(self.event(r).other, node);
         }
