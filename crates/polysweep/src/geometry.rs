@@ -130,6 +130,17 @@ pub(crate) fn open_len(ring: &[Point]) -> usize {
     }
 }
 
+/// The index after `i` around a ring of `n` vertices (`i < n`): `(i + 1) % n` without the division, which passes
+/// over every vertex took on their own.
+#[inline(always)]
+pub(crate) fn next_around(i: usize, n: usize) -> usize {
+    if i + 1 < n {
+        i + 1
+    } else {
+        0
+    }
+}
+
 /// Exact orientation of three points (Shewchuk's adaptive predicate): `Greater` when counter-clockwise.
 pub(crate) fn orient(a: Point, b: Point, c: Point) -> std::cmp::Ordering {
     let p = |v: Point| robust::Coord { x: v.x, y: v.y };

@@ -3,7 +3,7 @@
 use crate::error::{Error, Location};
 use crate::events::{InputEdge, Operand};
 use crate::exact::Line;
-use crate::geometry::{larger, open_len, smaller, MultiPolygon, Point, Polygon};
+use crate::geometry::{larger, next_around, open_len, smaller, MultiPolygon, Point, Polygon};
 
 /// Largest coordinate magnitude accepted: 2^200. Within it (and above [`MIN_COORDINATE`]) the products formed by
 /// the exact predicates neither overflow nor underflow, which their proofs assume.
@@ -317,8 +317,7 @@ pub(crate) fn add_edges(
     for ring in kept.flat_map(|(_, p)| p.rings()) {
         let n = open_len(ring);
         for i in 0..n {
-            // (The next vertex without `% n`, a division per edge.)
-            let (from, to) = (ring[i], ring[if i + 1 < n { i + 1 } else { 0 }]);
+            let (from, to) = (ring[i], ring[next_around(i, n)]);
             if from == to {
                 continue;
             }

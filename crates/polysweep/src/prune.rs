@@ -42,7 +42,9 @@
 //! the robustness page); only its last bits depend on what was swept.
 
 use crate::exact::Line;
-use crate::geometry::{open_len, orient, ring_area, MultiPolygon, Point, Polygon, Ring};
+use crate::geometry::{
+    next_around, open_len, orient, ring_area, MultiPolygon, Point, Polygon, Ring,
+};
 use crate::input::{running_sums, Bounds, Grid};
 use crate::validate::{convex_turn, lowest_leftmost, simple_ring_turn};
 use std::borrow::Cow;
@@ -237,7 +239,7 @@ fn vertex_near_an_edge(ring: &[Point], margin: f64) -> bool {
             a: [a.x, a.y],
             b: [b.x, b.y],
         };
-        let next = if e + 1 < n { e + 1 } else { 0 };
+        let next = next_around(e, n);
         (0..n).filter(|&v| v != e && v != next).any(|v| {
             Bounds::at(&ring[v]).meets(&around) && line.float_within([ring[v].x, ring[v].y], near)
         })
@@ -387,9 +389,10 @@ pub(crate) fn inside_one_convex(
             break;
         }
         orient_budget -= 4 * n;
-        inside[j] = grown.corners().iter().all(|&c| {
-            (0..n).all(|i| orient(ring[i], ring[if i + 1 < n { i + 1 } else { 0 }], c) == turn)
-        });
+        inside[j] = grown
+            .corners()
+            .iter()
+            .all(|&c| (0..n).all(|i| orient(ring[i], ring[next_around(i, n)], c) == turn));
     }
     inside
 }

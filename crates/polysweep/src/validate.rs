@@ -182,16 +182,15 @@ pub(crate) fn convex_turn(ring: &[Point]) -> Option<Ordering> {
         .checked_sub(1)
         .filter(|&n| n >= 3 && ring[0] == ring[n])?;
     // (Every index below is at most n, and `ring[n]` is `ring[0]`: no `% n`, a division per vertex.)
-    let at = |i: usize| ring[i];
-    let turn = orient(at(n - 1), at(0), at(1));
-    let x_direction = |i: usize| at(i + 1).x.partial_cmp(&at(i).x);
+    let turn = orient(ring[n - 1], ring[0], ring[1]);
+    let x_direction = |i: usize| ring[i + 1].x.partial_cmp(&ring[i].x);
     let mut last_direction = (0..n)
         .rev()
         .map(x_direction)
         .find(|&d| d != Some(Ordering::Equal))?;
     let mut changes = 0;
     for i in 0..n {
-        if i > 0 && orient(at(i - 1), at(i), at(i + 1)) != turn {
+        if i > 0 && orient(ring[i - 1], ring[i], ring[i + 1]) != turn {
             return None;
         }
         let direction = x_direction(i);
