@@ -15,21 +15,16 @@
 //!   smaller head, so the bulk of the work is one sort (of the ring vertices' points by value, not through their
 //!   ids), and the sweep then reads the events front to back.
 
+use crate::edges::{EventId, InputEdge, Operand, NONE};
 use crate::exact::{Exact, Line, SweepPoint};
-use crate::workspace::{take, Workspace};
 use std::cmp::Ordering;
 use std::hint::select_unpredictable;
 
+mod queue;
 mod sort;
 
+pub(crate) use queue::{EventQueue, Head};
 use sort::ordered_bits;
-
-pub(crate) type EventId = u32;
-/// "No event" / "no node".
-pub(crate) const NONE: u32 = u32::MAX;
-
-/// Subject or clipping operand (the paper's `pl`).
-pub(crate) type Operand = u8;
 
 /// 40 bytes: the events are the sweep's largest array, read front to back and, for an edge's other end or a
 /// neighbour's, far from where the sweep is, so their size is most of its memory traffic. (Doubling it to 128 bytes
@@ -171,16 +166,6 @@ pub(crate) fn far_point(events: &[SweepEvent], edges: &[InputEdge], e: EventId) 
     SweepPoint::input(if event.left() { line.b } else { line.a })
 }
 
-/// An input edge (step 1 of Fig. 5), before it becomes its two events.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct InputEdge {
-    /// Oriented in sweep order: `a` is the left endpoint.
-    pub line: Line,
-    pub operand: Operand,
-    /// +1 when the ring runs from `a` to `b`, else -1 (see [`SweepEvent::winding`]).
-    pub winding: i32,
-}
-
 /// What the event order reads of an event besides its point.
 struct AtPoint {
     left: bool,
@@ -232,6 +217,19 @@ pub(crate) fn event_order(
         .then(a.cmp(&b))
 }
 
+/// The working memory of [`initial_events`], kept from one sweep to the next (see [`crate::workspace`]): what it
+/// holds is overwritten.
+#[derive(Default)]
+pub(crate) struct SortScratch {
+    /// A key and the endpoints it stands for, and the sorted copy.
+    pub keys: Vec<(u64, [u32; 2])>,
+    pub sorted_keys: Vec<(u64, [u32; 2])>,
+    /// The endpoints in event order, each endpoint's place in it, and the sort's buckets.
+    pub order: Vec<u32>,
+    pub position: Vec<u32>,
+    pub buckets: Vec<u32>,
+}
+
 /// The initial events: two per input edge, created in the order of [`event_order`], so that the sweep reads them
 /// front to back.
 ///
@@ -239,12 +237,13 @@ pub(crate) fn event_order(
 /// sorted as one: half as many keys as endpoints. Input points are exact floats, so they are sorted by x as integer
 /// keys that order like the coordinates, by value (see [`sort`]); those with one x, which then come out
 /// next to each other, are sorted again by y, and the endpoints at one point by [`order_at_point`]. The sort moves
-/// small keys and reads the compact edges, never the larger events. Its vectors are `workspace`'s, and so is the
-/// vector of the events returned.
+/// small keys and reads the compact edges, never the larger events. It works in `scratch`, and writes the events
+/// into `events` (given empty, with the room of an earlier sweep).
 pub(crate) fn initial_events(
     edges: &[InputEdge],
     exact: &Exact,
-    workspace: &mut Workspace,
+    scratch: &mut SortScratch,
+    mut events: Vec<SweepEvent>,
 ) -> Vec<SweepEvent> {
     // An endpoint is `2 · edge + 1` for a left endpoint, `2 · edge` for a right one.
     let point = |end: u32| {
@@ -269,7 +268,7 @@ pub(crate) fn initial_events(
     // The endpoint where edge `j` begins along its ring (it ends at the other one).
     let begin = |j: usize| 2 * j as u32 + u32::from(edges[j].winding > 0);
     // A vertex's key (its x, as an integer that orders like it) and its two endpoints (or one and `NONE`).
-    let vertices = &mut workspace.keys;
+    let vertices = &mut scratch.keys;
     vertices.clear();
     vertices.reserve(edges.len() + 1);
     let mut vertex = |ends: [u32; 2]| vertices.push((ordered_bits(point(ends[0])[0]), ends));
@@ -291,8 +290,8 @@ pub(crate) fn initial_events(
         chain_start = j + 1;
     }
     // Keys that tie are ordered again below.
-    sort::sort_by_key(vertices, &mut workspace.sorted_keys, &mut workspace.buckets);
-    let order = &mut workspace.order;
+    sort::sort_by_key(vertices, &mut scratch.sorted_keys, &mut scratch.buckets);
+    let order = &mut scratch.order;
     order.clear();
     order.reserve(2 * edges.len());
     let mut at_one_point = Vec::new();
@@ -339,7 +338,7 @@ pub(crate) fn initial_events(
             order.extend_from_slice(&at_one_point);
         }
     }
-    let position = &mut workspace.position;
+    let position = &mut scratch.position;
     position.clear();
     position.resize(order.len(), 0);
     for (i, &end) in order.iter().enumerate() {
@@ -348,7 +347,6 @@ pub(crate) fn initial_events(
     // Room for a quarter as many events again from subdivision before the vector has to move (and be copied):
     // Table 1's workloads add from 0.6% (land × 8 squares) to 12.6% (× 8,192, which outgrew an eighth). Room
     // never used costs address space, not memory: its pages are never touched.
-    let mut events = take(&mut workspace.events);
     events.reserve(order.len() + order.len() / 4);
     events.extend(order.iter().map(|&end| {
         let segment = end / 2;
@@ -356,160 +354,6 @@ pub(crate) fn initial_events(
         SweepEvent::initial(&edges[segment as usize], segment, end % 2 == 1, other)
     }));
     events
-}
-
-/// The next event of Q: the next initial one or the top of the heap.
-#[derive(Clone, Copy)]
-pub(crate) struct Head {
-    pub event: EventId,
-    /// The other right event of a crossing whose four events wait as one entry (see [`Pending::partner`]), or
-    /// `NONE`.
-    pub partner: EventId,
-    from_heap: bool,
-}
-
-/// The event-point set Q of Fig. 5: the initial events, already in order (see [`initial_events`]), and a binary
-/// heap for the events that subdivision adds. Popping takes the smaller head; the order is the same as one priority
-/// queue's.
-pub(crate) struct EventQueue {
-    initial: EventId,
-    next_initial: EventId,
-    heap: Vec<Pending>,
-}
-
-/// An event in the heap, with its point's x. Most pairs are ordered by their x's alone, without reading the events,
-/// which lie far apart in memory: an x is exact or correctly rounded, and rounding is monotone, so points whose x's
-/// differ lie in the order of their x's. Only pairs with one x are given to the full order.
-#[derive(Clone, Copy)]
-struct Pending {
-    x: f64,
-    event: EventId,
-    /// For the first event of a crossing in the event order, a right event, the other one: the four events of the
-    /// crossing wait as this one entry (see `Sweep::process_crossing`). `NONE` for an event on its own. (In the
-    /// room the alignment of `x` leaves.)
-    partner: EventId,
-}
-
-/// Does `a` come before `b`, by x and then by `order`?
-#[inline(always)]
-fn before(a: Pending, b: Pending, order: &impl Fn(EventId, EventId) -> Ordering) -> bool {
-    a.x < b.x || (a.x == b.x && order(a.event, b.event) == Ordering::Less)
-}
-
-impl EventQueue {
-    /// A queue whose first `initial` events are `0..initial` in order.
-    pub fn new(initial: usize) -> Self {
-        EventQueue {
-            initial: initial as EventId,
-            next_initial: 0,
-            heap: Vec::new(),
-        }
-    }
-
-    /// Empties the queue.
-    pub fn clear(&mut self) {
-        self.next_initial = self.initial;
-        self.heap.clear();
-    }
-
-    /// Puts in `event`, whose point's x is `x`, with its `partner` (see [`Pending::partner`]; usually `NONE`).
-    pub fn push(
-        &mut self,
-        event: EventId,
-        partner: EventId,
-        x: f64,
-        order: impl Fn(EventId, EventId) -> Ordering,
-    ) {
-        self.heap.push(Pending { x, event, partner });
-        let mut child = self.heap.len() - 1;
-        while child > 0 {
-            let parent = (child - 1) / 2;
-            if !before(self.heap[child], self.heap[parent], &order) {
-                break;
-            }
-            self.heap.swap(child, parent);
-            child = parent;
-        }
-    }
-
-    /// The next event, without taking it (see [`Self::take`]). `x` gives an event's point's x.
-    pub fn peek(
-        &self,
-        x: impl Fn(EventId) -> f64,
-        order: impl Fn(EventId, EventId) -> Ordering,
-    ) -> Option<Head> {
-        let initial = Some(self.next_initial).filter(|&i| i < self.initial);
-        let first = |i| {
-            Some(Head {
-                event: i,
-                partner: NONE,
-                from_heap: false,
-            })
-        };
-        let top = |h: &Pending| {
-            Some(Head {
-                event: h.event,
-                partner: h.partner,
-                from_heap: true,
-            })
-        };
-        match (initial, self.heap.first()) {
-            (None, None) => None,
-            (Some(i), None) => first(i),
-            (None, Some(h)) => top(h),
-            (Some(i), Some(h)) => {
-                let next_initial = Pending {
-                    x: x(i),
-                    event: i,
-                    partner: NONE,
-                };
-                if before(*h, next_initial, &order) {
-                    top(h)
-                } else {
-                    first(i)
-                }
-            }
-        }
-    }
-
-    #[inline(always)]
-    pub fn pop(
-        &mut self,
-        x: impl Fn(EventId) -> f64,
-        order: impl Fn(EventId, EventId) -> Ordering,
-    ) -> Option<Head> {
-        let head = self.peek(x, &order)?;
-        self.take(head, order);
-        Some(head)
-    }
-
-    /// Takes out `head`, which [`Self::peek`] has just given (nothing pushed since): the two heads are not
-    /// compared again.
-    #[inline(always)]
-    pub fn take(&mut self, head: Head, order: impl Fn(EventId, EventId) -> Ordering) {
-        if !head.from_heap {
-            self.next_initial += 1;
-            return;
-        }
-        let top = self.heap.swap_remove(0);
-        let mut parent = 0;
-        loop {
-            let (l, r) = (2 * parent + 1, 2 * parent + 2);
-            let mut smallest = parent;
-            for child in [l, r] {
-                if child < self.heap.len() && before(self.heap[child], self.heap[smallest], &order)
-                {
-                    smallest = child;
-                }
-            }
-            if smallest == parent {
-                break;
-            }
-            self.heap.swap(parent, smallest);
-            parent = smallest;
-        }
-        debug_assert_eq!(top.event, head.event, "the head taken is the one peeked");
-    }
 }
 
 #[cfg(test)]
@@ -551,7 +395,7 @@ mod tests {
         add_edges(&mut edges, &subject, 0, |_| true);
         add_edges(&mut edges, &clipping, 1, |_| true);
         let exact = Exact::default();
-        let events = initial_events(&edges, &exact, &mut Default::default());
+        let events = initial_events(&edges, &exact, &mut Default::default(), Vec::new());
         assert_eq!(events.len(), 2 * edges.len());
         for i in 1..events.len() as EventId {
             assert_eq!(
@@ -630,33 +474,5 @@ mod tests {
             event.leave_status();
             assert_eq!((event.node(), event.result_edge()), (NONE, NONE));
         }
-    }
-
-    #[test]
-    fn queue_pops_in_order_across_initial_and_pushed_events() {
-        // Points ordered by x and then y: the heap tells apart those of different x by x, the others by the order.
-        let points = [
-            [1, 0],
-            [5, 1],
-            [9, 0],
-            [5, 0],
-            [7, 0],
-            [1, 1],
-            [5, 2],
-            [5, -1],
-        ];
-        let order = |a: EventId, b: EventId| points[a as usize].cmp(&points[b as usize]);
-        let x = |e: EventId| f64::from(points[e as usize][0]);
-        let mut queue = EventQueue::new(3);
-        for e in [3, 4, 5, 6, 7] {
-            queue.push(e, NONE, x(e), order);
-        }
-        let mut popped = Vec::new();
-        while let Some(head) = queue.pop(x, order) {
-            popped.push(points[head.event as usize]);
-        }
-        let mut sorted = points.to_vec();
-        sorted.sort();
-        assert_eq!(popped, sorted);
     }
 }

@@ -1,7 +1,7 @@
 //! Checking the input and turning its rings into sweep events (step 1 of Fig. 5).
 
+use crate::edges::{InputEdge, Operand};
 use crate::error::{Error, Location};
-use crate::events::{InputEdge, Operand};
 use crate::exact::Line;
 use crate::geometry::{larger, next_around, open_len, smaller, MultiPolygon, Point, Polygon};
 

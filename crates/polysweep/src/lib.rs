@@ -49,6 +49,7 @@
 //! [`exact`]. How this is made robust is on the [`robustness`] page.
 
 pub mod connect;
+pub(crate) mod edges;
 pub mod error;
 pub mod events;
 pub mod exact;
@@ -57,6 +58,7 @@ pub mod geojson;
 pub mod geometry;
 pub mod input;
 pub mod prune;
+pub(crate) mod rounding;
 pub mod select;
 pub mod status;
 pub mod subdivide;
@@ -95,7 +97,8 @@ pub use select::{FillRule, Operation};
 pub use validate::validate;
 pub use workspace::free_working_memory;
 
-use events::{InputEdge, MAX_EVENTS};
+use edges::InputEdge;
+use events::MAX_EVENTS;
 use input::Bounds;
 use select::Selection;
 use workspace::Workspace;
@@ -176,7 +179,7 @@ fn overlay_pair(
     // grown by it before it is judged (inside or outside the other operand, apart from the other boxes), so a
     // polygon is left out or copied on a stricter test than exactness needs; the judgments themselves are exact
     // (see `prune`), and a copy is written exactly as the sweep would write it.
-    let margin = 2.0 * connect::clearance(magnitude);
+    let margin = 2.0 * rounding::clearance(magnitude);
     // A clipping polygon wholly outside the subject, away from its edges, cannot change an intersection or a
     // difference, nor one wholly inside it a union; an intersection copies one wholly inside it and apart from the
     // others to its result (see `prune`; judged by the whole subject, before any of it is left out, and `margin`
@@ -350,13 +353,13 @@ fn sweep_once(
     };
     // Without constructed points nothing is rounded: the output is the exact arrangement.
     let rounded = stats.crossings > 0;
-    let suspect = rounded && (sweep.close_call || connect::rounding_may_matter(&sweep.vertices));
+    let suspect = rounded && (sweep.close_call || rounding::rounding_may_matter(&sweep.vertices));
     let events = &sweep.events;
     // Close calls to snap, as (vertex, result edge): only where rounding can move something.
     let close_pairs: Vec<(u32, u32)> = if rounded && may_snap {
         (sweep.close_pairs.iter())
             .map(|&(v, l)| (v, events[l as usize].result_edge()))
-            .filter(|&(_, r)| r != events::NONE)
+            .filter(|&(_, r)| r != edges::NONE)
             .collect()
     } else {
         Vec::new()

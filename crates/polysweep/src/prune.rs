@@ -520,7 +520,7 @@ mod tests {
             points.iter().map(|&[x, y]| Point::new(x, y)).collect()
         };
         // The margin `overlay_pair` gives coordinates of these magnitudes.
-        let margin = |magnitude: f64| 2.0 * crate::connect::clearance(magnitude);
+        let margin = |magnitude: f64| 2.0 * crate::rounding::clearance(magnitude);
         let clockwise = ring(&[[1.0, 1.0], [0.0, 1.0], [0.0, 0.0], [1.0, 0.0]]);
         assert_eq!(
             as_written(&clockwise, margin(1.0)),
@@ -607,7 +607,7 @@ mod tests {
             (judged(119.0, 9.0, 119.5, 9.5), false),
         ];
         let judged: Vec<Bounds> = cases.iter().map(|&(b, _)| b).collect();
-        let margin = 2.0 * crate::connect::clearance(128.0);
+        let margin = 2.0 * crate::rounding::clearance(128.0);
         let expected: Vec<bool> = cases.iter().map(|&(_, inside)| inside).collect();
         assert_eq!(
             inside_one_convex(&operand, &boxes, &judged, margin),
@@ -634,7 +634,7 @@ mod tests {
             })
             .collect();
         // The margin `overlay_pair` uses, for coordinates up to 100 (the boxes lie far inside the ring anyway).
-        let margin = 2.0 * crate::connect::clearance(100.0);
+        let margin = 2.0 * crate::rounding::clearance(100.0);
         let inside = inside_one_convex(&operand, &boxes, &judged, margin);
         let count = inside.iter().filter(|&&i| i).count();
         assert!(count > 0 && count < 100 && inside[0], "{count}");

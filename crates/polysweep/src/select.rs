@@ -17,7 +17,7 @@
 //! edge is the coverage below it; what the vertical edge separates is its right side (that coverage) from its
 //! left side (that coverage plus its winding).
 
-use crate::events::{EventId, NONE};
+use crate::edges::{EventId, NONE};
 use std::hint::select_unpredictable;
 
 /// A Boolean operation.

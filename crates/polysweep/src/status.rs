@@ -11,7 +11,7 @@
 //! Departure from the paper: the paper uses an STL `set` and finds an edge again by comparison (`S.find`). Finding
 //! by handle means removal never depends on comparisons made later.
 
-use crate::events::{EventId, NONE};
+use crate::edges::{EventId, NONE};
 
 #[derive(Clone, Copy)]
 struct Node<K> {

@@ -18,7 +18,7 @@
 //! - Every split point lies exactly on both edges' input lines (an endpoint on a line by an exact test, or an
 //!   exact crossing), so fragments never move: nothing is rounded until the output.
 
-use crate::events::EventId;
+use crate::edges::{EventId, NONE};
 use crate::exact::SweepPoint;
 use crate::geometry::{larger, smaller};
 use crate::sweep::Sweep;
@@ -153,11 +153,7 @@ impl Sweep<'_> {
         self.events.push(base.fragment(p, true, right));
         self.events[edge as usize].set_other(new_right);
         self.events[right as usize].set_other(new_left);
-        debug_assert_ne!(
-            base.node(),
-            crate::events::NONE,
-            "split of an edge not in S"
-        );
+        debug_assert_ne!(base.node(), NONE, "split of an edge not in S");
         self.status.key_mut(base.node()).right = p;
         new_right
     }

@@ -32,9 +32,9 @@
 //! popping Q) are `#[inline(always)]`: as calls, their arguments and results went through memory, which cost 1–3%
 //! of all instructions each (callgrind, Table 1's workloads).
 
+use crate::edges::{EventId, InputEdge, Operand, ResultEdge, NONE};
 use crate::events::{
-    event_order, far_point, initial_events, EventId, EventQueue, Head, InputEdge, Operand,
-    SweepEvent, MAX_EVENTS, NONE,
+    event_order, far_point, initial_events, EventQueue, Head, SweepEvent, MAX_EVENTS,
 };
 use crate::exact::{Exact, Line, SweepPoint};
 use crate::geometry::larger;
@@ -42,19 +42,6 @@ use crate::select::{Flags, Selection};
 use crate::workspace::{take, Workspace};
 use crate::Error;
 use std::cmp::Ordering;
-
-/// An edge of the result, oriented with the result on its left.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct ResultEdge {
-    pub from: u32,
-    pub to: u32,
-    /// The input segment it lies on, whose line (left to right) gives its direction.
-    pub segment: u32,
-    /// Travelled along the line (left to right), or against it.
-    pub forward: bool,
-    /// The closest non-vertical result edge below this one, as a left event (later: a result edge index).
-    pub below: u32,
-}
 
 /// What S keeps of an edge while the edge is in it: what the status order reads (see [`Sweep::is_below`]), which
 /// never changes while the edge is there; its endpoints, which possibleInter reads (a split moves the right one);
@@ -122,7 +109,12 @@ impl<'a> Sweep<'a> {
         workspace: &mut Workspace,
     ) -> Self {
         let exact = Exact::default();
-        let events = initial_events(edges, &exact, workspace);
+        let events = initial_events(
+            edges,
+            &exact,
+            &mut workspace.sort,
+            take(&mut workspace.events),
+        );
         let queue = EventQueue::new(events.len());
         // Every vertex has two events at least (a ring vertex two, a crossing four): room for as many vertices as
         // the events have room for, and for a result edge per input edge (a union of polygons apart keeps them
@@ -146,7 +138,7 @@ impl<'a> Sweep<'a> {
             last_left: NONE,
             close_call: false,
             close_pairs: Vec::new(),
-            widest_clearance: crate::connect::clearance(magnitude),
+            widest_clearance: crate::rounding::clearance(magnitude),
             max_events: MAX_EVENTS,
             stopped: false,
         }
@@ -347,7 +339,7 @@ impl<'a> Sweep<'a> {
             .flatten()
             .fold(0.0f64, |m, v| larger(m, v.abs()));
         // A vertex of the edge moves with it.
-        line.float_within(p.approx, crate::connect::clearance(magnitude))
+        line.float_within(p.approx, crate::rounding::clearance(magnitude))
             && ![a, b]
                 .iter()
                 .any(|q| self.exact.cmp_points(q, p) == Ordering::Equal)

@@ -7,9 +7,9 @@
 //! operation, emptied, for the next one, up to [`KEEP_BYTES`]; beyond that they are freed as before.
 //! [`free_working_memory`] frees them at once.
 
-use crate::events::{InputEdge, SweepEvent};
+use crate::edges::{InputEdge, ResultEdge};
+use crate::events::{SortScratch, SweepEvent};
 use crate::exact::SweepPoint;
-use crate::sweep::ResultEdge;
 use std::cell::Cell;
 use std::mem::size_of;
 
@@ -23,14 +23,7 @@ pub const KEEP_BYTES: usize = 64 << 20;
 pub(crate) struct Workspace {
     pub edges: Vec<InputEdge>,
     pub events: Vec<SweepEvent>,
-    /// The initial events' sort: a key and the endpoints it stands for, and the sorted copy (see
-    /// [`crate::events::initial_events`]).
-    pub keys: Vec<(u64, [u32; 2])>,
-    pub sorted_keys: Vec<(u64, [u32; 2])>,
-    /// Ids in one sweep's numbering: the initial events' order of endpoints, their positions, the sort's buckets.
-    pub order: Vec<u32>,
-    pub position: Vec<u32>,
-    pub buckets: Vec<u32>,
+    pub sort: SortScratch,
     pub vertices: Vec<SweepPoint>,
     pub result: Vec<ResultEdge>,
 }
@@ -40,13 +33,14 @@ impl Workspace {
         fn of<T>(v: &Vec<T>) -> usize {
             v.capacity() * size_of::<T>()
         }
+        let sort = &self.sort;
         of(&self.edges)
             + of(&self.events)
-            + of(&self.keys)
-            + of(&self.sorted_keys)
-            + of(&self.order)
-            + of(&self.position)
-            + of(&self.buckets)
+            + of(&sort.keys)
+            + of(&sort.sorted_keys)
+            + of(&sort.order)
+            + of(&sort.position)
+            + of(&sort.buckets)
             + of(&self.vertices)
             + of(&self.result)
     }
