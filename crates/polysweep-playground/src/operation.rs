@@ -60,7 +60,7 @@ pub fn run(op: Op, scene: &Scene, fill_rule: FillRule) -> Result<Outcome, Error>
         scene.operand(Operand::Subject),
         scene.operand(Operand::Clipping),
     );
-    let options = Options { fill_rule };
+    let options = Options::default().with_fill_rule(fill_rule);
     let start = Instant::now();
     let computed = match op {
         Op::Intersection => overlay_with_stats(Operation::Intersection, p, q, &options),
@@ -83,7 +83,7 @@ pub fn run(op: Op, scene: &Scene, fill_rule: FillRule) -> Result<Outcome, Error>
 pub fn region(scene: &Scene, which: Operand, fill_rule: FillRule) -> Result<MultiPolygon, Error> {
     let operand = scene.operand(which);
     let empty = MultiPolygon::default();
-    let options = Options { fill_rule };
+    let options = Options::default().with_fill_rule(fill_rule);
     match which {
         Operand::Subject => polysweep::overlay(Operation::Union, operand, &empty, &options),
         Operand::Clipping => polysweep::overlay(Operation::Union, &empty, operand, &options),

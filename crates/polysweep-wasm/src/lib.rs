@@ -103,7 +103,7 @@ pub fn overlay_flat(
             ))
         }
     };
-    let options = Options { fill_rule };
+    let options = Options::default().with_fill_rule(fill_rule);
     let operands = operands(coords, ring_offsets, polygon_offsets, operand_offsets)
         .map_err(|e| JsError::new(&e))?;
     let result = match &operands[..] {

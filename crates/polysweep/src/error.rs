@@ -25,6 +25,7 @@ impl fmt::Display for Location {
 
 /// Why an operation could not be carried out.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum Error {
     /// A coordinate is NaN or infinite.
     NonFiniteCoordinate { at: Location, value: f64 },

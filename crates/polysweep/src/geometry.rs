@@ -3,6 +3,8 @@
 //! They follow GeoJSON's model: a [`Polygon`] is one exterior ring plus holes, a [`MultiPolygon`] is a polygon
 //! set. Input rings may be given closed (first point repeated last) or open; output rings are always closed.
 
+use std::borrow::Cow;
+
 /// A point of the plane.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Point {
@@ -223,5 +225,14 @@ mod geo_interop {
                     .collect(),
             )
         }
+    }
+}
+
+/// `ring` closed: itself if it is (its first point repeated last), else a closed copy.
+pub(crate) fn closed(ring: &[Point]) -> Cow<'_, [Point]> {
+    if ring.len() > open_len(ring) {
+        Cow::Borrowed(ring)
+    } else {
+        Cow::Owned(ring.iter().chain(ring.first()).copied().collect())
     }
 }

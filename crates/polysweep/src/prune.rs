@@ -41,382 +41,147 @@
 //! far from it on or off, which moves a result edge by about an ulp. Either way the rounded result is valid (see
 //! the robustness page); only its last bits depend on what was swept.
 
-use crate::exact::Line;
-use crate::geometry::{
-    next_around, open_len, orient, ring_area, MultiPolygon, Point, Polygon, Ring,
-};
-use crate::input::{running_sums, Bounds, Grid};
-use crate::validate::{convex_turn, lowest_leftmost, simple_ring_turn};
-use std::borrow::Cow;
-use std::cmp::Ordering;
+mod convex;
+mod copy;
+mod grid;
+mod winding;
 
-/// The winding number of an operand's rings, known on the cells of a grid that no edge of theirs touches.
-pub(crate) struct KnownWinding {
-    grid: Grid,
-    /// Each cell's winding number (row by row), where known.
-    winding: Vec<i32>,
-    /// The rectangle sums (see [`Grid::rectangle_sums`]) of the cells where it is not known.
-    unknown: Vec<u32>,
+use crate::geometry::{MultiPolygon, Polygon};
+use crate::input::Bounds;
+use crate::options::Shortcuts;
+use crate::select::{FillRule, Operation};
+use convex::inside_one_convex;
+use copy::copied_whole;
+use grid::{Coverage, Grid};
+use winding::KnownWinding;
+
+/// What the sweep takes of two operands: which polygons of the subject and of the clipping operand it sweeps, and
+/// the clipping polygons an intersection copies to its result instead.
+pub(crate) struct Plan {
+    pub subject: Vec<bool>,
+    pub clipping: Vec<bool>,
+    pub copies: Vec<Polygon>,
 }
 
-impl KnownWinding {
-    /// The winding number of `operand`'s rings, all within `region`, on a grid of `cells` × `cells`.
-    pub fn new(operand: &MultiPolygon, region: Bounds, cells: usize) -> Self {
-        let grid = Grid::new(region, cells);
-        let n = grid.cells;
-        // Each row's line, where one lies strictly inside the row (a row of a degenerate grid may have none: NaN).
-        let lines: Vec<f64> = (0..n)
-            .map(|r| {
-                let y = region.min(1) + (r as f64 + 0.5) / grid.scale(1);
-                if y.is_finite() && grid.cell(y, 1) == r {
-                    y
-                } else {
-                    f64::NAN
-                }
-            })
-            .collect();
-        let (mut touches, mut winding) = (grid.difference_table(), vec![0i32; n * n]);
-        // Each edge takes a step per row it spans. Edges spanning many rows (a comb's long teeth) could make that
-        // up to 1,024 steps each: past a few per vertex the grid gives up and knows nothing, so the pass stays
-        // linear in the subject's vertices and cells.
-        let (budget, mut steps) = (4 * operand.vertex_count() + n, 0);
-        for ring in operand.0.iter().flat_map(|p| p.rings()) {
-            let ring = &ring[..open_len(ring)];
-            let Some(&last) = ring.last() else { continue };
-            // Each vertex's cell is worked out once; an edge's box touches the cells between its ends' (the cell
-            // of a coordinate is monotone in it).
-            let cell = |p: Point| [grid.cell(p.x, 0), grid.cell(p.y, 1)];
-            let (mut a, [mut ca, mut ra]) = (last, cell(last));
-            let mut counted = [[usize::MAX; 2]; 2];
-            for &b in ring {
-                let [cb, rb] = cell(b);
-                let range = [[ca.min(cb), ca.max(cb)], [ra.min(rb), ra.max(rb)]];
-                // (Most edges are short: one after another in one cell, which is counted once.)
-                if counted != range {
-                    grid.count_range(&mut touches, range);
-                    counted = range;
-                }
-                let [[_, c1], [r0, r1]] = range;
-                steps += r1 - r0 + 1;
-                if steps > budget {
-                    return KnownWinding {
-                        grid,
-                        winding: Vec::new(),
-                        unknown: grid.rectangle_sums(|_, _| true),
-                    };
-                }
-                // Where the edge crosses a row's line, it adds its direction to the cells right of its right
-                // end's column: differences along each row, summed below. (A row without a line has NaN, which
-                // no edge crosses.)
-                if c1 + 1 < n {
-                    let direction = if b.y < a.y { 1 } else { -1 };
-                    for (r, &y) in lines[r0..=r1].iter().enumerate() {
-                        if (a.y < y) != (b.y < y) {
-                            winding[(r0 + r) * n + c1 + 1] += direction;
-                        }
-                    }
-                }
-                (a, ca, ra) = (b, cb, rb);
+/// What to sweep of `subject` and `clipping` (their polygons' boxes `boxes`) for `operation`, with the shortcuts
+/// that `shortcuts` turns on. `margin`: farther apart than rounding moves anything, twice over. Not a tolerance that
+/// decides the result: it only chooses which polygons are left out or copied rather than swept, and always errs
+/// towards sweeping. A box is grown by it before it is judged (inside or outside the other operand, apart from the
+/// other boxes), so a polygon is left out or copied on a stricter test than exactness needs; the judgments
+/// themselves are exact, and a copy is written exactly as the sweep would write it.
+pub(crate) fn plan(
+    operation: Operation,
+    [subject, clipping]: [&MultiPolygon; 2],
+    [subject_boxes, clipping_boxes]: [&[Bounds]; 2],
+    fill_rule: FillRule,
+    shortcuts: &Shortcuts,
+    margin: f64,
+) -> Plan {
+    let mut plan = Plan {
+        subject: vec![true; subject.0.len()],
+        clipping: vec![true; clipping.0.len()],
+        copies: Vec::new(),
+    };
+    if operation == Operation::Xor {
+        return plan; // every polygon of either operand changes a xor
+    }
+    // Each clipping polygon inside the subject (`Some(true)`) or outside it (`Some(false)`) throughout its box
+    // grown by `margin`, where known; judged by the whole subject, before any of it is left out. An intersection
+    // and a difference leave out those outside, a union those inside.
+    let inside = if shortcuts.prune_by_winding {
+        let boxes = [subject_boxes, clipping_boxes];
+        inside_subject(operation, subject, clipping, boxes, fill_rule, margin)
+    } else {
+        vec![None; clipping.0.len()]
+    };
+    let left_out = if operation == Operation::Union {
+        Some(true)
+    } else {
+        Some(false)
+    };
+    for (swept, inside) in plan.clipping.iter_mut().zip(&inside) {
+        *swept = *inside != left_out;
+    }
+    if operation == Operation::Intersection && shortcuts.copy_inside {
+        let copied;
+        (copied, plan.copies) = copied_whole(clipping, clipping_boxes, &inside, margin);
+        for (swept, copied) in plan.clipping.iter_mut().zip(copied) {
+            *swept &= !copied;
+        }
+    }
+    // A subject polygon inside one convex clipping polygon, away from the others, cannot change a union or a
+    // difference either (exact together with leaving out clipping polygons as above).
+    if operation != Operation::Intersection && shortcuts.prune_inside_convex {
+        let inside_clipping = inside_one_convex(clipping, clipping_boxes, subject_boxes, margin);
+        for (swept, inside) in plan.subject.iter_mut().zip(inside_clipping) {
+            *swept &= !inside;
+        }
+    }
+    // An intersection lies where polygons of both operands are, and a difference where the subject's are: a polygon
+    // whose box meets no polygon's box of the other operand cannot change the result. Exact: a ring's winding
+    // number is 0 outside its box, so wherever the result can lie the operand's interior, under either fill rule,
+    // is that of the polygons kept. The subject's polygons are judged by the boxes of the clipping polygons swept.
+    if operation != Operation::Union && shortcuts.prune_by_boxes {
+        // About as many cells as polygons.
+        let cells = Grid::side_for(subject.0.len() + clipping.0.len());
+        if operation == Operation::Intersection {
+            let swept_boxes: Vec<Bounds> = (clipping_boxes.iter().zip(&plan.clipping))
+                .filter(|(_, &swept)| swept)
+                .map(|(b, _)| *b)
+                .collect();
+            let near_clipping = Coverage::new(&swept_boxes, cells);
+            for (swept, b) in plan.subject.iter_mut().zip(subject_boxes) {
+                *swept &= near_clipping.may_meet(b);
             }
         }
-        let touches = grid.counts(touches);
-        winding.chunks_exact_mut(n).for_each(running_sums);
-        let unknown = grid.rectangle_sums(|r, c| lines[r].is_nan() || touches[r * n + c] > 0);
-        KnownWinding {
-            grid,
-            winding,
-            unknown,
+        let near_subject = Coverage::new(subject_boxes, cells);
+        for (swept, b) in plan.clipping.iter_mut().zip(clipping_boxes) {
+            *swept = *swept && near_subject.may_meet(b);
         }
     }
-
-    /// The winding number everywhere in box `b`, if it is one number there that the grid knows.
-    pub fn throughout(&self, b: &Bounds) -> Option<i32> {
-        let region = &self.grid.region;
-        if !b.meets(region) {
-            return Some(0); // every ring lies within the region
-        }
-        if !b.within(region) {
-            return None;
-        }
-        let range = self.grid.range(b);
-        if self.grid.marked_in(&self.unknown, range) > 0 {
-            return None;
-        }
-        let [[c, _], [r, _]] = range;
-        Some(self.winding[r * self.grid.cells + c])
-    }
+    plan
 }
 
-/// The most vertices of a clipping polygon that an intersection copies whole (see [`copied_whole`]): its ring is
-/// checked against itself pair of edges by pair of edges.
-const MAX_VERTICES_TO_COPY: usize = 32;
+/// Fewer clipping polygons than this are not judged by the subject's winding number: each would have to lie within
+/// a cell of a grid of a few cells, away from all of the subject's edges, to be left out.
+const MIN_POLYGONS_TO_JUDGE: usize = 16;
 
-/// The clipping polygons that an intersection copies to its result as they are, instead of sweeping them, and
-/// their copies as result polygons. Copied is a polygon that is one simple ring of a few vertices, that `inside`
-/// says lies wholly inside the subject (`Some(true)`, judged on its box grown by `margin`), and whose box is farther
-/// than `margin` from every other clipping polygon's box (`boxes`). There the clipping operand is that ring alone
-/// and the subject is everywhere, so the ring is its own part of the intersection. The rest of the result lies
-/// within the other clipping polygons' boxes, and rounding moves it by less than `margin`: it cannot meet the
-/// copies, nor be snapped to them (see [`crate::connect`]). (Polygons wholly outside the subject, `Some(false)`,
-/// are apart from the copies without a look: their grown boxes lie outside the subject, the copies' inside it.)
-pub(crate) fn copied_whole(
+/// Each clipping polygon inside the subject (`Some(true)`) or outside it (`Some(false)`) throughout its box grown
+/// by `margin`, where the subject's winding number on a grid tells (see [`KnownWinding`]).
+fn inside_subject(
+    operation: Operation,
+    subject: &MultiPolygon,
     clipping: &MultiPolygon,
-    boxes: &[Bounds],
-    inside: &[Option<bool>],
+    [subject_boxes, clipping_boxes]: [&[Bounds]; 2],
+    fill_rule: FillRule,
     margin: f64,
-) -> (Vec<bool>, Vec<Polygon>) {
-    let candidates: Vec<bool> = (clipping.0.iter().enumerate())
-        .map(|(p, polygon)| {
-            polygon.holes.is_empty()
-                && open_len(&polygon.exterior) <= MAX_VERTICES_TO_COPY
-                && inside[p] == Some(true)
-        })
-        .collect();
-    let mut copied = vec![false; clipping.0.len()];
-    if !candidates.contains(&true) {
-        return (copied, Vec::new());
+) -> Vec<Option<bool>> {
+    // The grid costs about a pass over the subject's vertices: it can pay only when the clipping operand, in many
+    // polygons, has at least a share of the subject's vertices. A union, which leaves out only the polygons
+    // inside, gains less from it than an intersection or a difference, which leave out those outside: it needs
+    // half the subject's vertices, they a quarter (measured on Table 1's data, see docs/benchmarks.md).
+    let share = if operation == Operation::Union { 2 } else { 4 };
+    let subject_vertices = subject.vertex_count();
+    if clipping.0.len() < MIN_POLYGONS_TO_JUDGE
+        || share * clipping.vertex_count() < subject_vertices
+    {
+        return vec![None; clipping.0.len()];
     }
-    let listed: Vec<u32> = (0..inside.len() as u32)
-        .filter(|&p| inside[p as usize] != Some(false))
-        .collect();
-    let apart = apart(boxes, margin, &candidates, &listed);
-    let mut polygons = Vec::with_capacity(apart.iter().filter(|&&a| a).count());
-    for (p, polygon) in clipping.0.iter().enumerate().filter(|&(p, _)| apart[p]) {
-        if let Some(ring) = as_written(&polygon.exterior, margin) {
-            copied[p] = true;
-            polygons.push(Polygon::new(ring, Vec::new()));
-        }
-    }
-    (copied, polygons)
-}
-
-/// `ring` as the sweep writes a simple ring: closed, counter-clockwise, from its lowest-leftmost vertex (where the
-/// walk of [`crate::connect`] begins). `None` if it is not simple, or where the sweep would write it otherwise:
-/// where its float area, by which `connect` tells a ring's orientation, has not the sign of its exact turn (a
-/// sliver, which `connect` drops), or where a vertex lies within `margin` of an edge not its own (an edge that
-/// `connect` could bend through the vertex, should the result be rounded anywhere).
-fn as_written(ring: &[Point], margin: f64) -> Option<Ring> {
-    let (n, closed) = (open_len(ring), closed(ring));
-    let turn = simple_ring_turn(&closed)?;
-    if ring_area(&closed).partial_cmp(&0.0) != Some(turn) || vertex_near_an_edge(&closed, margin) {
-        return None;
-    }
-    // (A simple ring passes once through each vertex: its lowest-leftmost one is the same either way round.)
-    let (open, first) = (&closed[..n], lowest_leftmost(&closed[..n]));
-    let mut written = Vec::with_capacity(n + 1);
-    if turn == Ordering::Greater {
-        written.extend_from_slice(&open[first..]);
-        written.extend_from_slice(&open[..first]);
-    } else {
-        written.extend(open[..=first].iter().rev());
-        written.extend(open[first + 1..].iter().rev());
-    }
-    written.push(open[first]);
-    Some(written)
-}
-
-/// `ring` closed: itself if it is (its first point repeated last), else a closed copy.
-fn closed(ring: &[Point]) -> Cow<'_, [Point]> {
-    if ring.len() > open_len(ring) {
-        Cow::Borrowed(ring)
-    } else {
-        Cow::Owned(ring.iter().chain(ring.first()).copied().collect())
-    }
-}
-
-/// Does a vertex of closed `ring` lie within about `margin` of one of its edges that does not end there? Asked in
-/// floats, of twice `margin` and of the edge's box grown by as much. Not a tolerance that decides the result: it
-/// only chooses between copying the ring and sweeping it, and it errs towards sweeping. Twice `margin` is 16 ulps
-/// of the input's largest magnitude, where the sweep's close calls reach 4 and the float cross products (this one
-/// and `connect`'s) err by under 5 each: a ring the sweep could bend through its own vertex is never copied.
-fn vertex_near_an_edge(ring: &[Point], margin: f64) -> bool {
-    let n = ring.len() - 1;
-    let near = 2.0 * margin;
-    (0..n).any(|e| {
-        let (a, b) = (ring[e], ring[e + 1]);
-        let around = Bounds::at(&a).around(&Bounds::at(&b)).grown(near);
-        let line = Line {
-            a: [a.x, a.y],
-            b: [b.x, b.y],
-        };
-        let next = next_around(e, n);
-        (0..n).filter(|&v| v != e && v != next).any(|v| {
-            Bounds::at(&ring[v]).meets(&around) && line.float_within([ring[v].x, ring[v].y], near)
-        })
-    })
-}
-
-/// Cells per box, on average, beyond which a [`BoxIndex`] is not made: the grid is then too coarse for the boxes.
-const CELLS_PER_BOX: usize = 16;
-/// Boxes looked at for one box beyond which [`apart`] and [`inside_one_convex`] give up on it: it shares its cells
-/// with too many.
-const MAX_LOOKED_AT: usize = 64;
-
-/// Boxes listed in the cells of a grid that each touches once grown by a margin, so that every box within the
-/// margin of a listed box shares a cell with it: which boxes may meet a box is read from its cells.
-struct BoxIndex {
-    grid: Grid,
-    /// The boxes of each cell, counting-sorted by cell: `starts[cell]..starts[cell + 1]` of `members`.
-    starts: Vec<usize>,
-    members: Vec<u32>,
-}
-
-impl BoxIndex {
-    /// The boxes of `boxes` that `listed` names (by index, in ascending order, which each cell's list keeps), each
-    /// grown by `margin`; `None` where they would touch too many cells (see [`CELLS_PER_BOX`]), so that making it
-    /// stays linear in the boxes.
-    fn new(boxes: &[Bounds], listed: &[u32], margin: f64) -> Option<Self> {
-        let region = (listed.iter()).fold(Bounds::EMPTY, |r, &i| r.around(&boxes[i as usize]));
-        let grid = Grid::new(region, Grid::side_for(listed.len()));
-        // The cells of each listed box grown by `margin`; none for an empty box (of a polygon without vertices),
-        // which meets nothing.
-        let ranges: Vec<[[usize; 2]; 2]> = (listed.iter())
-            .map(|&i| {
-                let b = &boxes[i as usize];
-                if b.meets(&grid.region) {
-                    grid.range(&b.grown(margin))
-                } else {
-                    [[1, 0], [1, 0]]
-                }
-            })
-            .collect();
-        let (budget, mut cells_listed) = (CELLS_PER_BOX * listed.len(), 0);
-        for [[c0, c1], [r0, r1]] in &ranges {
-            // (Counted box by box, checked as it goes: the sum of all could overflow a 32-bit `usize`.)
-            cells_listed += (c1 + 1).saturating_sub(*c0) * (r1 + 1).saturating_sub(*r0);
-            if cells_listed > budget {
-                return None;
-            }
-        }
-        // (Plain loops over each range's rows and columns: as chained iterators they took three times the
-        // instructions.)
-        let width = grid.cells;
-        let mut starts = vec![0usize; width * width + 1];
-        for &[[c0, c1], [r0, r1]] in &ranges {
-            for r in r0..=r1 {
-                for count in &mut starts[r * width + c0 + 1..=r * width + c1 + 1] {
-                    *count += 1;
-                }
-            }
-        }
-        for cell in 0..width * width {
-            starts[cell + 1] += starts[cell];
-        }
-        let (mut members, mut next) = (vec![0u32; cells_listed], starts.clone());
-        for (&i, &[[c0, c1], [r0, r1]]) in listed.iter().zip(&ranges) {
-            for r in r0..=r1 {
-                for slot in &mut next[r * width + c0..=r * width + c1] {
-                    members[*slot] = i;
-                    *slot += 1;
-                }
-            }
-        }
-        Some(BoxIndex {
-            grid,
-            starts,
-            members,
-        })
-    }
-
-    /// Does `f` hold for every listed box in the cells that `b` touches (each box as often as it shares a cell with
-    /// `b`), at most [`MAX_LOOKED_AT`] of them? Every listed box within the margin of `b` is among them.
-    fn all_near(&self, b: &Bounds, mut f: impl FnMut(usize) -> bool) -> bool {
-        if !b.meets(&self.grid.region) {
-            return true;
-        }
-        let ([[c0, c1], [r0, r1]], width) = (self.grid.range(b), self.grid.cells);
-        let mut looked_at = 0;
-        (r0..=r1).all(|r| {
-            let cells = self.starts[r * width + c0]..self.starts[r * width + c1 + 1];
-            self.members[cells].iter().all(|&q| {
-                looked_at += 1;
-                looked_at <= MAX_LOOKED_AT && f(q as usize)
-            })
-        })
-    }
-}
-
-/// Which of the polygons whose boxes are `judged` lie inside one convex polygon of `operand` (whose boxes are
-/// `boxes`), away from its edges and from the other polygons: their box grown by `margin` has its corners strictly
-/// inside that polygon, a strictly convex ring without holes, and meets no other polygon's box. Throughout the grown
-/// box, then, no edge of `operand` passes and its winding number is that ring's, ±1: inside under either fill rule.
-/// A union or a difference leaves such polygons out (see `overlay_pair`). Where a box's cells hold too many others
-/// (see [`BoxIndex`]), or past a budget of orientation tests linear in the vertices and polygons, the answer is "not
-/// inside": the pass stays linear.
-pub(crate) fn inside_one_convex(
-    operand: &MultiPolygon,
-    boxes: &[Bounds],
-    judged: &[Bounds],
-    margin: f64,
-) -> Vec<bool> {
-    let mut inside = vec![false; judged.len()];
-    let all: Vec<u32> = (0..boxes.len() as u32).collect();
-    let Some(index) = BoxIndex::new(boxes, &all, margin) else {
-        return inside;
-    };
-    // Each polygon's turn, if it is a strictly convex ring without holes, worked out when first asked.
-    let mut turns: Vec<Option<Option<Ordering>>> = vec![None; boxes.len()];
-    let mut orient_budget = 16 * (operand.vertex_count() + judged.len());
-    for (j, b) in judged.iter().enumerate() {
-        let grown = b.grown(margin);
-        let mut only = None;
-        let alone = index.all_near(&grown, |q| {
-            // (A second box that meets it ends the look.)
-            let meets = boxes[q].meets(&grown) && only != Some(q);
-            if meets && only.is_none() {
-                only = Some(q);
-                return true;
-            }
-            !meets
-        });
-        let Some(q) = only.filter(|_| alone) else {
-            continue;
-        };
-        let polygon = &operand.0[q];
-        let turn = *turns[q].get_or_insert_with(|| {
-            (polygon.holes.is_empty())
-                .then(|| convex_turn(&closed(&polygon.exterior)))
-                .flatten()
-        });
-        let Some(turn) = turn else {
-            continue;
-        };
-        let ring = &polygon.exterior;
-        let n = open_len(ring);
-        // Many polygons inside one convex ring of many vertices would make this quadratic: past a few orientation
-        // tests per vertex of both operands, the rest are not left out.
-        if orient_budget < 4 * n {
-            break;
-        }
-        orient_budget -= 4 * n;
-        inside[j] = grown
-            .corners()
-            .iter()
-            .all(|&c| (0..n).all(|i| orient(ring[i], ring[next_around(i, n)], c) == turn));
-    }
-    inside
-}
-
-/// Which of the boxes that `asked` names are farther than `margin` from every other box of `boxes` that `listed`
-/// names by index, in ascending order (it names the asked ones too). Where the boxes touch too many cells of a
-/// [`BoxIndex`], or a box's cells hold too many others, the answer is "not apart": the pass stays linear in the
-/// boxes.
-fn apart(boxes: &[Bounds], margin: f64, asked: &[bool], listed: &[u32]) -> Vec<bool> {
-    let mut apart = vec![false; boxes.len()];
-    let Some(index) = BoxIndex::new(boxes, listed, margin) else {
-        return apart;
-    };
-    for p in (0..boxes.len()).filter(|&p| asked[p]) {
-        let grown = boxes[p].grown(margin);
-        apart[p] = index.all_near(&grown, |q| q == p || !boxes[q].meets(&grown));
-    }
-    apart
+    // About four cells per clipping polygon, as pruning needs cells smaller than the polygons it leaves out, and no
+    // more cells than the subject has vertices.
+    let cells = Grid::side_for((4 * clipping.0.len()).min(subject_vertices));
+    let known = KnownWinding::new(subject, Bounds::around_all(subject_boxes), cells);
+    (clipping_boxes.iter())
+        .map(|b| (known.throughout(&b.grown(margin))).map(|w| fill_rule.is_inside(w)))
+        .collect()
 }
 
 #[cfg(test)]
 mod tests {
+    use super::copy::as_written;
+    use super::grid::apart;
     use super::*;
-    use crate::geometry::Point;
+    use crate::geometry::{open_len, Point};
     use crate::test_random::unit;
 
     /// The winding number of `operand`'s rings at `p`, by counting every edge that crosses the ray to its left.

@@ -132,6 +132,12 @@ impl Sweep<'_> {
             self.cut(self.status.event(lower), x),
             self.cut(self.status.event(upper), x),
         );
+        if !self.shortcuts.crossing_step {
+            for e in [a, b, a + 1, b + 1] {
+                self.push(e);
+            }
+            return;
+        }
         let (first, second) = match self.event_order(a, b) {
             Less => (a, b),
             _ => (b, a),

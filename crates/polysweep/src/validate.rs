@@ -89,24 +89,110 @@ fn boxes_overlap(a: &[f64; 4], b: &[f64; 4]) -> bool {
     a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3]
 }
 
+/// How a polygon set breaks the output contract, and where: polygons by index, rings by index within their
+/// polygon (0 the exterior, 1.. the holes).
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum ValidationError {
+    /// A ring is not valid on its own.
+    Ring {
+        polygon: usize,
+        ring: usize,
+        problem: RingProblem,
+    },
+    /// An exterior ring is clockwise, or a hole counter-clockwise.
+    WrongOrientation { polygon: usize, ring: usize },
+    /// Two edges cross, overlap, or one ends on the other; each as its endpoints, polygon and ring.
+    EdgesMeet {
+        edges: [(Point, Point, usize, usize); 2],
+    },
+    /// A hole reaches outside its polygon's exterior.
+    HoleOutside { polygon: usize, hole: usize },
+    /// Two holes of one polygon overlap.
+    HolesOverlap { polygon: usize, holes: [usize; 2] },
+    /// Two polygons' interiors overlap.
+    PolygonsOverlap { polygons: [usize; 2] },
+}
+
+/// What is wrong with a ring on its own.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum RingProblem {
+    /// Not closed, or fewer than 3 distinct vertices.
+    NotClosed,
+    /// A point repeated right after itself.
+    RepeatedPoint,
+    /// The ring passes twice through one vertex.
+    VertexTwice,
+    /// No area at its lowest-leftmost vertex (a spike, or a flat ring).
+    ZeroArea,
+}
+
+impl std::fmt::Display for RingProblem {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            RingProblem::NotClosed => "not closed or fewer than 3 vertices",
+            RingProblem::RepeatedPoint => "repeated consecutive point",
+            RingProblem::VertexTwice => "the ring passes twice through one vertex",
+            RingProblem::ZeroArea => "zero area",
+        })
+    }
+}
+
+impl std::fmt::Display for ValidationError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ValidationError::Ring {
+                polygon,
+                ring,
+                problem,
+            } => write!(f, "polygon {polygon}, ring {ring}: {problem}"),
+            ValidationError::WrongOrientation { polygon, ring } => {
+                let kind = if *ring == 0 { "exterior" } else { "hole" };
+                write!(f, "polygon {polygon}, ring {ring}: {kind} ring has the wrong orientation")
+            }
+            ValidationError::EdgesMeet {
+                edges: [(a, b, pi, ri), (c, d, pj, rj)],
+            } => write!(
+                f,
+                "edges cross or overlap: {a:?}-{b:?} (polygon {pi}, ring {ri}) and {c:?}-{d:?} (polygon {pj}, ring {rj})"
+            ),
+            ValidationError::HoleOutside { polygon, hole } => {
+                write!(f, "polygon {polygon}: hole {hole} is not inside the exterior")
+            }
+            ValidationError::HolesOverlap {
+                polygon,
+                holes: [h, k],
+            } => write!(f, "polygon {polygon}: hole {h} overlaps hole {k}"),
+            ValidationError::PolygonsOverlap { polygons: [p, q] } => {
+                write!(f, "polygon {p} overlaps polygon {q}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for ValidationError {}
+
 /// Checks `result` against the output contract; the error says which rule broke where.
-pub fn validate(result: &MultiPolygon) -> Result<(), String> {
+pub fn validate(result: &MultiPolygon) -> Result<(), ValidationError> {
     let mut edges: Vec<(Point, Point, usize, usize)> = Vec::new();
     for (pi, polygon) in result.0.iter().enumerate() {
         for (ri, ring) in polygon.rings().enumerate() {
-            let at = || format!("polygon {pi}, ring {ri}");
-            let turn = ring_turn(ring).map_err(|problem| format!("{}: {problem}", at()))?;
+            let turn = ring_turn(ring).map_err(|problem| ValidationError::Ring {
+                polygon: pi,
+                ring: ri,
+                problem,
+            })?;
             let want = if ri == 0 {
                 Ordering::Greater
             } else {
                 Ordering::Less
             };
             if turn != want {
-                return Err(format!(
-                    "{}: {} ring has the wrong orientation",
-                    at(),
-                    if ri == 0 { "exterior" } else { "hole" }
-                ));
+                return Err(ValidationError::WrongOrientation {
+                    polygon: pi,
+                    ring: ri,
+                });
             }
             edges.extend(ring.windows(2).map(|w| (w[0], w[1], pi, ri)));
         }
@@ -117,22 +203,22 @@ pub fn validate(result: &MultiPolygon) -> Result<(), String> {
 
 /// The turn of closed `ring` at its lowest-leftmost vertex (its orientation, `Greater` counter-clockwise), or what
 /// is wrong with it on its own: too few vertices, a vertex twice, or no area there.
-fn ring_turn(ring: &[Point]) -> Result<Ordering, &'static str> {
+fn ring_turn(ring: &[Point]) -> Result<Ordering, RingProblem> {
     if ring.len() < 4 || ring.first() != ring.last() {
-        return Err("not closed or fewer than 3 vertices");
+        return Err(RingProblem::NotClosed);
     }
     if ring.windows(2).any(|w| w[0] == w[1]) {
-        return Err("repeated consecutive point");
+        return Err(RingProblem::RepeatedPoint);
     }
     let mut distinct: Vec<Point> = ring[..ring.len() - 1].to_vec();
     distinct.sort_by(lexicographic);
     if distinct.windows(2).any(|w| w[0] == w[1]) {
-        return Err("the ring passes twice through one vertex");
+        return Err(RingProblem::VertexTwice);
     }
     let n = ring.len() - 1;
     let k = lowest_leftmost(&ring[..n]);
     match orient(ring[(k + n - 1) % n], ring[k], ring[k + 1]) {
-        Ordering::Equal => Err("zero area"),
+        Ordering::Equal => Err(RingProblem::ZeroArea),
         turn => Ok(turn),
     }
 }
@@ -152,7 +238,7 @@ pub(crate) fn simple_ring_turn(ring: &[Point]) -> Option<Ordering> {
 }
 
 /// No two edges may meet except at a common endpoint.
-fn check_edges(edges: &mut [(Point, Point, usize, usize)]) -> Result<(), String> {
+fn check_edges(edges: &mut [(Point, Point, usize, usize)]) -> Result<(), ValidationError> {
     edges.sort_by(|a, b| a.0.x.min(a.1.x).total_cmp(&b.0.x.min(b.1.x)));
     let mut active: Vec<usize> = Vec::new();
     for i in 0..edges.len() {
@@ -162,9 +248,9 @@ fn check_edges(edges: &mut [(Point, Point, usize, usize)]) -> Result<(), String>
         for &j in &active {
             let (c, d, pj, rj) = edges[j];
             if edges_conflict([a, b], [c, d]) {
-                return Err(format!(
-                    "edges cross or overlap: {a:?}-{b:?} (polygon {pi}, ring {ri}) and {c:?}-{d:?} (polygon {pj}, ring {rj})"
-                ));
+                return Err(ValidationError::EdgesMeet {
+                    edges: [(a, b, pi, ri), (c, d, pj, rj)],
+                });
             }
         }
         active.push(i);
@@ -232,7 +318,7 @@ fn edges_conflict([a, b]: [Point; 2], [c, d]: [Point; 2]) -> bool {
 }
 
 /// Holes inside their shell and not inside each other; polygons' interiors disjoint.
-fn check_nesting(result: &MultiPolygon) -> Result<(), String> {
+fn check_nesting(result: &MultiPolygon) -> Result<(), ValidationError> {
     let boxes: Vec<[f64; 4]> = result.0.iter().map(|p| bbox(&p.exterior)).collect();
     for (pi, polygon) in result.0.iter().enumerate() {
         for (hi, hole) in polygon.holes.iter().enumerate() {
@@ -248,18 +334,17 @@ fn check_nesting(result: &MultiPolygon) -> Result<(), String> {
             )
             .any(|(_, side)| side == Side::Outside)
             {
-                return Err(format!(
-                    "polygon {pi}: hole {} is not inside the exterior",
-                    hi + 1
-                ));
+                return Err(ValidationError::HoleOutside {
+                    polygon: pi,
+                    hole: hi + 1,
+                });
             }
             for (hj, other) in polygon.holes.iter().enumerate().filter(|&(hj, _)| hj != hi) {
                 if sides(hole, other, bbox(other)).any(|(_, side)| side == Side::Inside) {
-                    return Err(format!(
-                        "polygon {pi}: hole {} overlaps hole {}",
-                        hi + 1,
-                        hj + 1
-                    ));
+                    return Err(ValidationError::HolesOverlap {
+                        polygon: pi,
+                        holes: [hi + 1, hj + 1],
+                    });
                 }
             }
         }
@@ -272,7 +357,7 @@ fn check_nesting(result: &MultiPolygon) -> Result<(), String> {
                 side == Side::Inside && other.holes.iter().all(|h| locate(h, p) == Side::Outside)
             });
             if overlaps {
-                return Err(format!("polygon {pi} overlaps polygon {qi}"));
+                return Err(ValidationError::PolygonsOverlap { polygons: [pi, qi] });
             }
         }
     }
@@ -367,24 +452,27 @@ mod tests {
         let hole: &[[f64; 2]] = &[[1.0, 1.0], [1.0, 2.0], [2.0, 2.0], [2.0, 1.0], [1.0, 1.0]];
         assert_eq!(validate(&mp(&[shell, hole])), Ok(()));
         let reversed: Vec<[f64; 2]> = shell.iter().rev().copied().collect();
-        assert!(validate(&mp(&[&reversed]))
-            .unwrap_err()
-            .contains("orientation"));
+        assert!(matches!(
+            validate(&mp(&[&reversed])),
+            Err(ValidationError::WrongOrientation { .. })
+        ));
         let open = &shell[..4];
         assert!(validate(&mp(&[open])).is_err());
         let bow_tie: &[[f64; 2]] = &[[0.0, 0.0], [2.0, 0.0], [0.0, 2.0], [2.0, 2.0], [0.0, 0.0]];
         assert!(validate(&mp(&[bow_tie])).is_err());
         let outside_hole: &[[f64; 2]] =
             &[[5.0, 5.0], [5.0, 6.0], [6.0, 6.0], [6.0, 5.0], [5.0, 5.0]];
-        assert!(validate(&mp(&[shell, outside_hole]))
-            .unwrap_err()
-            .contains("not inside"));
+        assert!(matches!(
+            validate(&mp(&[shell, outside_hole])),
+            Err(ValidationError::HoleOutside { .. })
+        ));
         // A hole touching the shell at two vertices and bulging out between them.
         let triangle: &[[f64; 2]] = &[[0.0, 1.0], [7.0, 4.0], [7.0, 7.0], [0.0, 1.0]];
         let bulge: &[[f64; 2]] = &[[5.0, 4.0], [7.0, 7.0], [8.0, 4.0], [7.0, 4.0], [5.0, 4.0]];
-        assert!(validate(&mp(&[triangle, bulge]))
-            .unwrap_err()
-            .contains("not inside"));
+        assert!(matches!(
+            validate(&mp(&[triangle, bulge])),
+            Err(ValidationError::HoleOutside { .. })
+        ));
         let spike: &[[f64; 2]] = &[
             [0.0, 0.0],
             [4.0, 0.0],
@@ -422,6 +510,9 @@ mod tests {
             ]],
             square(2.0, 2.0),
         ]);
-        assert!(validate(&nested).unwrap_err().contains("overlaps polygon"));
+        assert!(matches!(
+            validate(&nested),
+            Err(ValidationError::PolygonsOverlap { .. })
+        ));
     }
 }

@@ -59,7 +59,11 @@ thread_local! {
 
 /// Runs `operation` with this thread's kept vectors, and keeps them again afterwards if they are not too large.
 /// (Called again from within `operation`, or while the thread ends, it runs with new vectors.)
-pub(crate) fn with<R>(operation: impl FnOnce(&mut Workspace) -> R) -> R {
+/// With `keep` false (a test's switch, see [`crate::Shortcuts`]), it runs with new vectors and keeps none.
+pub(crate) fn with<R>(keep: bool, operation: impl FnOnce(&mut Workspace) -> R) -> R {
+    if !keep {
+        return operation(&mut Workspace::default());
+    }
     let mut workspace = KEPT.try_with(Cell::take).unwrap_or_default();
     let outcome = operation(&mut workspace);
     if workspace.bytes() <= KEEP_BYTES {
@@ -82,26 +86,26 @@ mod tests {
 
     /// Each test runs on a thread of its own, so what it keeps is its own.
     fn kept_events() -> usize {
-        with(|workspace| workspace.events.capacity())
+        with(true, |workspace| workspace.events.capacity())
     }
 
     #[test]
     fn keeps_the_vectors_of_an_operation_for_the_next_unless_too_large() {
-        with(|workspace| workspace.events.reserve(1000));
+        with(true, |workspace| workspace.events.reserve(1000));
         assert!(kept_events() >= 1000);
         free_working_memory();
         assert_eq!(kept_events(), 0);
         // Past the bound, nothing is kept (the room reserved is address space only, never written).
-        with(|workspace| {
+        with(true, |workspace| {
             workspace
                 .events
                 .reserve(KEEP_BYTES / size_of::<SweepEvent>() + 1);
         });
         assert_eq!(kept_events(), 0);
         // Called from within an operation, an operation runs with vectors of its own.
-        with(|outer| {
+        with(true, |outer| {
             outer.events.reserve(10);
-            assert_eq!(with(|inner| inner.events.capacity()), 0);
+            assert_eq!(with(true, |inner| inner.events.capacity()), 0);
         });
         assert!(kept_events() >= 10);
     }

@@ -1,6 +1,7 @@
 //! The shared fixtures of `tests/fixtures/` (one JSON file per case, see its README), run through the core: every
 //! operation's result must equal the expected one after normalisation, pass the output validator, and stay the
-//! same under translation, rotation by 90°, swapped operands of symmetric operations and reversed rings.
+//! same under translation, rotation by 90°, swapped operands of symmetric operations and reversed rings, and with
+//! every optimisation that is not in the paper switched off.
 
 mod common;
 
@@ -36,7 +37,7 @@ fn load() -> Vec<Fixture> {
                 name: v["name"].as_str().unwrap().to_string(),
                 subject: multipolygon(&v["subject"]),
                 clipping: multipolygon(&v["clipping"]),
-                options: Options { fill_rule },
+                options: Options::default().with_fill_rule(fill_rule),
                 expected: OPERATIONS
                     .iter()
                     .map(|&(key, op)| (key, op, multipolygon(&v["expected"][key])))
@@ -54,6 +55,17 @@ fn check_all(
     on_expected: impl Fn(&MultiPolygon) -> MultiPolygon,
     swap_symmetric: bool,
 ) -> Vec<String> {
+    check_all_with(label, on_operands, on_expected, swap_symmetric, |o| o)
+}
+
+/// [`check_all`], with each fixture's options changed by `on_options`.
+fn check_all_with(
+    label: &str,
+    on_operands: impl Fn(&MultiPolygon) -> MultiPolygon,
+    on_expected: impl Fn(&MultiPolygon) -> MultiPolygon,
+    swap_symmetric: bool,
+    on_options: impl Fn(Options) -> Options,
+) -> Vec<String> {
     let mut failures = Vec::new();
     for f in load() {
         if label == "reversed rings" && f.options.fill_rule == FillRule::NonZero {
@@ -67,7 +79,7 @@ fn check_all(
                 (&subject, &clipping)
             };
             let what = format!("{} / {key} / {label}", f.name);
-            match overlay(*op, a, b, &f.options) {
+            match overlay(*op, a, b, &on_options(f.options)) {
                 Err(e) => failures.push(format!("{what}: error {e}")),
                 Ok(result) => {
                     if let Err(e) = validate(&result) {
@@ -150,5 +162,16 @@ fn fixtures_with_reversed_rings() {
         reverse_rings,
         MultiPolygon::clone,
         false,
+    ));
+}
+
+#[test]
+fn fixtures_with_the_papers_algorithm_alone() {
+    assert_none(check_all_with(
+        "without shortcuts",
+        MultiPolygon::clone,
+        MultiPolygon::clone,
+        false,
+        Options::without_shortcuts,
     ));
 }

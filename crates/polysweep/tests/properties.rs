@@ -78,7 +78,7 @@ fn check_membership(
     points: &[Point],
     fill_rule: FillRule,
 ) -> Result<(), TestCaseError> {
-    let options = Options { fill_rule };
+    let options = Options::default().with_fill_rule(fill_rule);
     for op in OPS {
         let result = overlay(op, a, b, &options).map_err(|e| TestCaseError::fail(e.to_string()))?;
         if let Err(e) = validate(&result) {
@@ -276,7 +276,7 @@ proptest! {
         });
         let subject = MultiPolygon(vec![Polygon::new((0..4).flat_map(side).collect(), vec![])]);
         let clipping = MultiPolygon(polygons);
-        let options = Options { fill_rule: if non_zero { FillRule::NonZero } else { FillRule::EvenOdd } };
+        let options = Options::default().with_fill_rule(if non_zero { FillRule::NonZero } else { FillRule::EvenOdd });
         let sorted = |m: MultiPolygon| {
             let mut polygons = m.to_coordinates();
             polygons.sort_by(|a, b| a.partial_cmp(b).unwrap());

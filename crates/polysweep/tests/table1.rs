@@ -1,11 +1,11 @@
 //! The paper's Table 1 workload on real data (tests/data, see its README): Natural Earth land intersected with
 //! grids of squares. Result areas must match the reference areas of ../shared/data/README.md (all exact float
 //! engines agree to these digits) to 1e-9 relative, the number of edge crossings must match, and every result must
-//! pass the validator.
+//! pass the validator. With any optimisation that is not in the paper switched off, the results are the same.
 
 mod common;
 
-use polysweep::{overlay_with_stats, validate, MultiPolygon, Operation, Options};
+use polysweep::{overlay_with_stats, validate, MultiPolygon, Operation, Options, Shortcuts};
 use std::io::Read;
 
 fn load(name: &str) -> MultiPolygon {
@@ -22,8 +22,27 @@ fn load(name: &str) -> MultiPolygon {
 }
 
 fn check(operation: Operation, squares: &str, area: f64, crossings: usize, land: &MultiPolygon) {
+    check_with(
+        operation,
+        squares,
+        area,
+        crossings,
+        land,
+        &Options::default(),
+    );
+}
+
+/// [`check`] with `options`; returns the result.
+fn check_with(
+    operation: Operation,
+    squares: &str,
+    area: f64,
+    crossings: usize,
+    land: &MultiPolygon,
+    options: &Options,
+) -> MultiPolygon {
     let clip = load(squares);
-    let (result, stats) = overlay_with_stats(operation, land, &clip, &Options::default()).unwrap();
+    let (result, stats) = overlay_with_stats(operation, land, &clip, options).unwrap();
     let relative = (result.area() - area).abs() / area;
     // The reference is given to 6 decimals (about 1e-10 relative at these magnitudes).
     assert!(
@@ -36,6 +55,7 @@ fn check(operation: Operation, squares: &str, area: f64, crossings: usize, land:
         "{operation:?} land × {squares}: edge crossings"
     );
     validate(&result).unwrap_or_else(|e| panic!("{operation:?} land × {squares}: {e}"));
+    result
 }
 
 #[test]
@@ -83,4 +103,53 @@ fn land_union_and_difference_with_3895_squares() {
         3960,
         &land,
     );
+}
+
+/// Each optimisation not in the paper, switched off.
+const SWITCHES: [(&str, fn(&mut Shortcuts)); 9] = [
+    ("prune_by_boxes", |s| s.prune_by_boxes = false),
+    ("prune_by_winding", |s| s.prune_by_winding = false),
+    ("copy_inside", |s| s.copy_inside = false),
+    ("prune_inside_convex", |s| s.prune_inside_convex = false),
+    ("stop_early", |s| s.stop_early = false),
+    ("crossing_step", |s| s.crossing_step = false),
+    ("successor_in_place", |s| s.successor_in_place = false),
+    ("insert_after_last", |s| s.insert_after_last = false),
+    ("keep_working_memory", |s| s.keep_working_memory = false),
+];
+
+#[test]
+fn every_shortcut_off_gives_the_same_results() {
+    let land = load("land-50m");
+    let cases = [
+        (Operation::Intersection, "squares-974", 13451.382211, 2006),
+        (Operation::Union, "squares-3895", 46913.956575, 3960),
+        (Operation::Difference, "squares-3895", 8110.128937, 3960),
+    ];
+    for (operation, squares, area, crossings) in cases {
+        let with_all = check_with(
+            operation,
+            squares,
+            area,
+            crossings,
+            &land,
+            &Options::default(),
+        );
+        let mut variants: Vec<(&str, Options)> = SWITCHES
+            .iter()
+            .map(|&(name, switch_off)| {
+                let mut options = Options::default();
+                switch_off(&mut options.shortcuts);
+                (name, options)
+            })
+            .collect();
+        variants.push(("all", Options::default().without_shortcuts()));
+        for (name, options) in variants {
+            let result = check_with(operation, squares, area, crossings, &land, &options);
+            assert!(
+                common::normalise(&result) == common::normalise(&with_all),
+                "{operation:?} land × {squares} with {name} off: not the result with every shortcut on"
+            );
+        }
+    }
 }

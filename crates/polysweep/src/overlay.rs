@@ -1,0 +1,228 @@
+//! The pipeline of one operation (Fig. 5 and §5): the input checked and made edges, the sweep, the result edges
+//! connected into rings and polygons, and the rounded result repaired where rounding may have broken it.
+//!
+//! ```text
+//! input::check ─► prune::plan ─► input::add_edges ─► Sweep::run ─► connect ─► (repair sweeps) ─► MultiPolygon
+//!                 (shortcuts)                        events, status,
+//!                                                    subdivide, select
+//! ```
+
+use crate::edges::{InputEdge, NONE};
+use crate::events::MAX_EVENTS;
+use crate::input::{self, Bounds};
+use crate::options::Options;
+use crate::select::{Operation, Selection};
+use crate::sweep::Sweep;
+use crate::workspace::{self, Workspace};
+use crate::{connect, prune, rounding, Error, MultiPolygon, Stats};
+
+/// `operation` on `subject` and `clipping`, in this thread's working memory.
+pub(crate) fn overlay_pair(
+    operation: Operation,
+    subject: &MultiPolygon,
+    clipping: &MultiPolygon,
+    options: &Options,
+) -> Result<(MultiPolygon, Stats), Error> {
+    let boxes = [input::check(0, subject)?, input::check(1, clipping)?];
+    let bounds = boxes.each_ref().map(|b| Bounds::around_all(b));
+    let magnitude = bounds[0].around(&bounds[1]).magnitude();
+    let margin = 2.0 * rounding::clearance(magnitude);
+    let shortcuts = &options.shortcuts;
+    let [subject_boxes, clipping_boxes] = boxes.each_ref().map(Vec::as_slice);
+    let plan = prune::plan(
+        operation,
+        [subject, clipping],
+        [subject_boxes, clipping_boxes],
+        options.fill_rule,
+        shortcuts,
+        margin,
+    );
+    workspace::with(shortcuts.keep_working_memory, |workspace| {
+        let mut edges = workspace::take(&mut workspace.edges);
+        input::add_edges(&mut edges, subject, 0, |p| plan.subject[p]);
+        input::add_edges(&mut edges, clipping, 1, |p| plan.clipping[p]);
+        let selection = Selection::Pair {
+            operation,
+            fill_rule: options.fill_rule,
+        };
+        let stop_x = stop_x(operation, &bounds, options);
+        let (mut result, stats) = sweep(edges, selection, stop_x, magnitude, options, workspace)?;
+        result.0.extend(plan.copies);
+        Ok((result, stats))
+    })
+}
+
+/// `operation` over many operands (see [`crate::overlay_all`]): each made a valid polygon set by its own sweep,
+/// then one sweep that counts, for every region, how many of them contain it.
+pub(crate) fn overlay_many(
+    operation: Operation,
+    operands: &[&MultiPolygon],
+    options: &Options,
+) -> Result<MultiPolygon, Error> {
+    workspace::with(options.shortcuts.keep_working_memory, |workspace| {
+        overlay_many_in(operation, operands, options, workspace)
+    })
+}
+
+fn overlay_many_in(
+    operation: Operation,
+    operands: &[&MultiPolygon],
+    options: &Options,
+    workspace: &mut Workspace,
+) -> Result<MultiPolygon, Error> {
+    let mut boxes = Vec::with_capacity(operands.len());
+    for (index, operand) in operands.iter().enumerate() {
+        boxes.push(Bounds::around_all(&input::check(index, operand)?));
+    }
+    if operands.is_empty() {
+        return Ok(MultiPolygon::default());
+    }
+    let normalise = Selection::Pair {
+        operation: Operation::Union,
+        fill_rule: options.fill_rule,
+    };
+    let mut edges = Vec::new();
+    for (index, operand) in operands.iter().enumerate() {
+        let mut own = workspace::take(&mut workspace.edges);
+        input::add_edges(&mut own, operand, 0, |_| true);
+        let magnitude = boxes[index].magnitude();
+        let (valid, _) = sweep(own, normalise, f64::INFINITY, magnitude, options, workspace)?;
+        let slot = u8::from(operation == Operation::Difference && index > 0);
+        input::add_edges(&mut edges, &valid, slot, |_| true);
+    }
+    let in_slot_0 = if operation == Operation::Difference {
+        1
+    } else {
+        operands.len() as i32
+    };
+    let selection = Selection::Count {
+        operation,
+        operands: in_slot_0,
+    };
+    let magnitude = Bounds::around_all(&boxes).magnitude();
+    let stop_x = stop_x(operation, &boxes, options);
+    Ok(sweep(edges, selection, stop_x, magnitude, options, workspace)?.0)
+}
+
+/// Past this x the result can have no edge, so the sweep stops there (the end of the subject for a difference,
+/// of the operand that ends first for an intersection), given the box of every operand. Not in the paper; exact,
+/// as every operand's rings lie within its box.
+fn stop_x(operation: Operation, boxes: &[Bounds], options: &Options) -> f64 {
+    if !options.shortcuts.stop_early {
+        return f64::INFINITY;
+    }
+    match operation {
+        Operation::Intersection => boxes
+            .iter()
+            .map(Bounds::max_x)
+            .fold(f64::INFINITY, f64::min),
+        Operation::Difference => boxes[0].max_x(),
+        Operation::Union | Operation::Xor => f64::INFINITY,
+    }
+}
+
+/// Repair passes allowed after one operation. Each pass sweeps the rounded result, whose vertices are then exact
+/// inputs: a pass that constructs no crossing point rounds nothing and ends the repair. On Table 1's data no pass is
+/// needed; on random decimal grids, one in 99.4% of the cases and three at most (see the robustness page); the
+/// bound only guarantees that the function returns.
+const MAX_REPAIR_PASSES: usize = 4;
+
+/// The sweep of Fig. 5 over `edges`, whose coordinates are of magnitude `magnitude` at most, then the result
+/// rounded to f64 and, where rounding may have broken it, repaired by sweeping it again (see the robustness page;
+/// the result lies within the edges' box, so within the same magnitude). `edges` is given to `workspace` once done.
+fn sweep(
+    mut edges: Vec<InputEdge>,
+    selection: Selection,
+    stop_x: f64,
+    magnitude: f64,
+    options: &Options,
+    workspace: &mut Workspace,
+) -> Result<(MultiPolygon, Stats), Error> {
+    let first = Pass {
+        stop_x,
+        magnitude,
+        may_snap: MAX_REPAIR_PASSES > 0,
+    };
+    let (mut result, mut stats, mut suspect) =
+        sweep_once(&edges, selection, first, options, workspace)?;
+    stats.input_edges = edges.len();
+    while suspect && stats.repair_passes < MAX_REPAIR_PASSES {
+        edges.clear();
+        input::add_edges(&mut edges, &result, 0, |_| true);
+        let repair = Selection::Count {
+            operation: Operation::Union,
+            operands: 1,
+        };
+        stats.repair_passes += 1;
+        let pass = Pass {
+            stop_x: f64::INFINITY,
+            magnitude,
+            may_snap: stats.repair_passes < MAX_REPAIR_PASSES,
+        };
+        (result, _, suspect) = sweep_once(&edges, repair, pass, options, workspace)?;
+    }
+    workspace.edges = edges;
+    Ok((result, stats))
+}
+
+/// How one sweep goes: where it stops, the magnitude of its coordinates, and whether a repair pass may follow it.
+/// Edges bent through vertices (see [`rounding`]) meet there only once the result is swept again, so the last pass
+/// allowed bends none and writes the result as rounded.
+#[derive(Clone, Copy)]
+struct Pass {
+    stop_x: f64,
+    magnitude: f64,
+    may_snap: bool,
+}
+
+/// One sweep and its rounded result, and whether that result needs a repair pass.
+fn sweep_once(
+    edges: &[InputEdge],
+    selection: Selection,
+    pass: Pass,
+    options: &Options,
+    workspace: &mut Workspace,
+) -> Result<(MultiPolygon, Stats, bool), Error> {
+    // (Checked before the events are made: their construction counts endpoints in 32 bits.)
+    if 2 * edges.len() > MAX_EVENTS {
+        return Err(Error::TooLarge { limit: MAX_EVENTS });
+    }
+    let shortcuts = options.shortcuts;
+    let mut sweep = Sweep::new(
+        edges,
+        selection,
+        pass.stop_x,
+        pass.magnitude,
+        shortcuts,
+        workspace,
+    );
+    sweep.run()?;
+    let stats = Stats {
+        crossings: sweep.exact.crossing_count(),
+        events: sweep.events.len(),
+        ..Stats::default()
+    };
+    // Without constructed points nothing is rounded: the output is the exact arrangement.
+    let rounded = stats.crossings > 0;
+    let suspect = rounded && (sweep.close_call || rounding::rounding_may_matter(&sweep.vertices));
+    let events = &sweep.events;
+    // Close calls to snap, as (vertex, result edge): only where rounding can move something.
+    let close_pairs: Vec<(u32, u32)> = if rounded && pass.may_snap {
+        (sweep.close_pairs.iter())
+            .map(|&(v, l)| (v, events[l as usize].result_edge()))
+            .filter(|&(_, r)| r != NONE)
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let (result, snapped) = connect::connect(
+        &sweep.exact,
+        edges,
+        &sweep.vertices,
+        &mut sweep.result,
+        |e| events[e as usize].result_edge(),
+        &close_pairs,
+    );
+    sweep.give_back(workspace);
+    Ok((result, stats, suspect || snapped))
+}

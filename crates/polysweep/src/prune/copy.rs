@@ -1,0 +1,100 @@
+//! Clipping polygons that an intersection copies to its result as they are, instead of sweeping them.
+
+use super::grid::apart;
+use crate::exact::Line;
+use crate::geometry::{
+    closed, next_around, open_len, ring_area, MultiPolygon, Point, Polygon, Ring,
+};
+use crate::input::Bounds;
+use crate::validate::{lowest_leftmost, simple_ring_turn};
+use std::cmp::Ordering;
+
+/// The most vertices of a clipping polygon that an intersection copies whole (see [`copied_whole`]): its ring is
+/// checked against itself pair of edges by pair of edges.
+const MAX_VERTICES_TO_COPY: usize = 32;
+
+/// The clipping polygons that an intersection copies to its result as they are, instead of sweeping them, and
+/// their copies as result polygons. Copied is a polygon that is one simple ring of a few vertices, that `inside`
+/// says lies wholly inside the subject (`Some(true)`, judged on its box grown by `margin`), and whose box is farther
+/// than `margin` from every other clipping polygon's box (`boxes`). There the clipping operand is that ring alone
+/// and the subject is everywhere, so the ring is its own part of the intersection. The rest of the result lies
+/// within the other clipping polygons' boxes, and rounding moves it by less than `margin`: it cannot meet the
+/// copies, nor be snapped to them (see [`crate::connect`]). (Polygons wholly outside the subject, `Some(false)`,
+/// are apart from the copies without a look: their grown boxes lie outside the subject, the copies' inside it.)
+pub(crate) fn copied_whole(
+    clipping: &MultiPolygon,
+    boxes: &[Bounds],
+    inside: &[Option<bool>],
+    margin: f64,
+) -> (Vec<bool>, Vec<Polygon>) {
+    let candidates: Vec<bool> = (clipping.0.iter().enumerate())
+        .map(|(p, polygon)| {
+            polygon.holes.is_empty()
+                && open_len(&polygon.exterior) <= MAX_VERTICES_TO_COPY
+                && inside[p] == Some(true)
+        })
+        .collect();
+    let mut copied = vec![false; clipping.0.len()];
+    if !candidates.contains(&true) {
+        return (copied, Vec::new());
+    }
+    let listed: Vec<u32> = (0..inside.len() as u32)
+        .filter(|&p| inside[p as usize] != Some(false))
+        .collect();
+    let apart = apart(boxes, margin, &candidates, &listed);
+    let mut polygons = Vec::with_capacity(apart.iter().filter(|&&a| a).count());
+    for (p, polygon) in clipping.0.iter().enumerate().filter(|&(p, _)| apart[p]) {
+        if let Some(ring) = as_written(&polygon.exterior, margin) {
+            copied[p] = true;
+            polygons.push(Polygon::new(ring, Vec::new()));
+        }
+    }
+    (copied, polygons)
+}
+
+/// `ring` as the sweep writes a simple ring: closed, counter-clockwise, from its lowest-leftmost vertex (where the
+/// walk of [`crate::connect`] begins). `None` if it is not simple, or where the sweep would write it otherwise:
+/// where its float area, by which `connect` tells a ring's orientation, has not the sign of its exact turn (a
+/// sliver, which `connect` drops), or where a vertex lies within `margin` of an edge not its own (an edge that
+/// `connect` could bend through the vertex, should the result be rounded anywhere).
+pub(super) fn as_written(ring: &[Point], margin: f64) -> Option<Ring> {
+    let (n, closed) = (open_len(ring), closed(ring));
+    let turn = simple_ring_turn(&closed)?;
+    if ring_area(&closed).partial_cmp(&0.0) != Some(turn) || vertex_near_an_edge(&closed, margin) {
+        return None;
+    }
+    // (A simple ring passes once through each vertex: its lowest-leftmost one is the same either way round.)
+    let (open, first) = (&closed[..n], lowest_leftmost(&closed[..n]));
+    let mut written = Vec::with_capacity(n + 1);
+    if turn == Ordering::Greater {
+        written.extend_from_slice(&open[first..]);
+        written.extend_from_slice(&open[..first]);
+    } else {
+        written.extend(open[..=first].iter().rev());
+        written.extend(open[first + 1..].iter().rev());
+    }
+    written.push(open[first]);
+    Some(written)
+}
+
+/// Does a vertex of closed `ring` lie within about `margin` of one of its edges that does not end there? Asked in
+/// floats, of twice `margin` and of the edge's box grown by as much. Not a tolerance that decides the result: it
+/// only chooses between copying the ring and sweeping it, and it errs towards sweeping. Twice `margin` is 16 ulps
+/// of the input's largest magnitude, where the sweep's close calls reach 4 and the float cross products (this one
+/// and `connect`'s) err by under 5 each: a ring the sweep could bend through its own vertex is never copied.
+fn vertex_near_an_edge(ring: &[Point], margin: f64) -> bool {
+    let n = ring.len() - 1;
+    let near = 2.0 * margin;
+    (0..n).any(|e| {
+        let (a, b) = (ring[e], ring[e + 1]);
+        let around = Bounds::at(&a).around(&Bounds::at(&b)).grown(near);
+        let line = Line {
+            a: [a.x, a.y],
+            b: [b.x, b.y],
+        };
+        let next = next_around(e, n);
+        (0..n).filter(|&v| v != e && v != next).any(|v| {
+            Bounds::at(&ring[v]).meets(&around) && line.float_within([ring[v].x, ring[v].y], near)
+        })
+    })
+}
