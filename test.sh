@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Runs every test of the repository on a fresh machine that has Rust (rustup) and Node 18+: it installs what it
-# needs first (the wasm target, wasm-bindgen-cli 0.2.130, the npm devDependencies, Debian's Chromium), then runs the
-# core's unit, fixture, property and Table 1 tests, the playground's native tests and the doc examples, builds the
-# npm package and the playground for the browser, and runs the package's Node, TypeScript and browser tests and the
-# playground's browser test.
+# needs first (the wasm target, wasm-bindgen-cli 0.2.130, the npm devDependencies, Debian's Chromium), then checks
+# formatting and clippy's lints, runs the core's unit, fixture, property and Table 1 tests (and the geo-types
+# feature's), the playground's native tests and the doc examples, builds the npm package and the playground for the
+# browser, and runs the package's Node, TypeScript and browser tests and the playground's browser test.
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -18,11 +18,15 @@ fi
 npm install --no-audit --no-fund
 
 # --- the Rust core ---
+rustup component add clippy rustfmt 2>/dev/null || true
 cargo fmt --all -- --check
+cargo clippy --workspace --all-targets -- -D warnings
 # Property tests draw random cases: a fixed seed keeps CI reproducible (unset it locally to explore new cases).
 export PROPTEST_RNG_SEED="${PROPTEST_RNG_SEED:-20091}"
 cargo test --workspace --all-targets
 cargo test --workspace --doc
+# The geo-types conversions, a feature no other crate turns on.
+cargo test -p polysweep --features geo-types --test geo_types
 # The core's property tests again, optimised, over ten times as many cases (about half a minute): the cases above
 # missed a ring lost to rounding (tests/regressions.rs) that runs of 4,000 with other seeds found.
 PROPTEST_CASES=3000 PROPTEST_MAX_GLOBAL_REJECTS=100000 cargo test --release -p polysweep --test properties

@@ -12,6 +12,9 @@ import { existsSync, mkdirSync, readFileSync, statSync, writeFileSync } from 'no
 import { join, relative } from 'node:path';
 import { BENCH_DIR, FULL_N, REFERENCE_AREAS, REFERENCE_TOLERANCE, ROOT } from './data.mjs';
 
+/** The line of docs/benchmarks.md after which the page is written by hand; regenerating keeps that part. */
+const HAND_WRITTEN = '<!-- The section below is written by hand';
+
 const NATIVE_PEERS = ['i_overlay', 'geo', 'clipper2'];
 const WASM_PEERS = ['clipper2-wasm', 'js-angusj-clipper', 'martinez-polygon-clipping', 'polygon-clipping', 'polyclip-ts'];
 const INFO_ENGINES = ['polysweep-flat']; // measured, shown, never a peer
@@ -551,7 +554,10 @@ function main() {
   mkdirSync(args.out, { recursive: true });
   const md = join(args.out, 'benchmarks.md');
   const svg = join(args.out, 'benchmarks.svg');
-  writeFileSync(md, markdown(native, wasm, targets, args));
+  // The hand-written part of the page (how polysweep got fast) follows HAND_WRITTEN and is kept as it is.
+  const kept = existsSync(md) ? readFileSync(md, 'utf8') : '';
+  const handWritten = kept.includes(HAND_WRITTEN) ? kept.slice(kept.indexOf(HAND_WRITTEN)) : '';
+  writeFileSync(md, markdown(native, wasm, targets, args).trimEnd() + '\n\n' + handWritten);
   writeFileSync(svg, svgChart(native, wasm));
 
   const rel = (p) => relative(process.cwd(), p) || p;

@@ -345,8 +345,8 @@ pub(crate) fn initial_events(
         position[end as usize] = i as EventId;
     }
     // Room for a quarter as many events again from subdivision before the vector has to move (and be copied):
-    // Table 1's workloads add from 0.6% (land × 8 squares) to 12.6% (× 8,192, which outgrew an eighth). Room
-    // never used costs address space, not memory: its pages are never touched.
+    // more than Table 1's workloads add. Room never used costs address space, not memory: its pages are never
+    // touched.
     events.reserve(order.len() + order.len() / 4);
     events.extend(order.iter().map(|&end| {
         let segment = end / 2;

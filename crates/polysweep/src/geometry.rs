@@ -152,8 +152,8 @@ pub(crate) fn orient(a: Point, b: Point, c: Point) -> std::cmp::Ordering {
 }
 
 /// The smaller of two floats that are not NaN, by one comparison. `f64::min` also sorts out NaN, which in wasm,
-/// where that is not one instruction, costs a call to libm's `fmin` (with `fmax`, 8% of the time of land ∩ 8
-/// squares in the npm package, before these).
+/// where that is not one instruction, costs a call to libm's `fmin` (a large part of the npm package's time with
+/// `fmax`, before these).
 pub(crate) fn smaller(a: f64, b: f64) -> f64 {
     if b < a {
         b

@@ -2,7 +2,7 @@
 //!
 //! Where no edge of an operand passes, its winding number cannot change: a clipping polygon whose box lies in such
 //! a place and outside the subject cannot change an intersection or a difference, and one inside it cannot change
-//! a union, so it is left out of the sweep (see `overlay_pair`). This is what makes clipping a coastline
+//! a union, so it is left out of the sweep (see [`plan`]). This is what makes clipping a coastline
 //! with a grid of tiles cost little more than the tiles that meet the coast: at land × 32,768 squares, most
 //! squares are out at sea. Of those inside, an intersection copies to its result the ones it can tell are their
 //! own part of it, simple rings apart from the other tiles (see [`copied_whole`]): at 32,768 squares, 8,510 of

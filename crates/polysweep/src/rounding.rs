@@ -152,7 +152,7 @@ pub(crate) fn merge_rounded(
     // cleared, so a large block does not make every later block pay for its size.
     let mut block: Vec<usize> = Vec::new();
     let mut block_has_rounded_x = false;
-    // A fixed-seed fast hash: SipHash, std's default, was 5% of the time at 32,768 squares.
+    // A fixed-seed fast hash: SipHash, std's default, was a noticeable part of the time on large grids.
     let mut in_crossing_blocks: HashMap<[u64; 2], u32, foldhash::fast::FixedState> =
         HashMap::default();
     let key = |p: [f64; 2]| p.map(|v| (v + 0.0).to_bits()); // -0 as 0

@@ -29,8 +29,8 @@
 //! `process_crossing`).
 //!
 //! The steps taken for every event (possibleInter, `settle`, the close-call checks, the in-place step's fit test,
-//! popping Q) are `#[inline(always)]`: as calls, their arguments and results went through memory, which cost 1–3%
-//! of all instructions each (callgrind, Table 1's workloads).
+//! popping Q) are `#[inline(always)]`: as calls, their arguments and results went through memory (see
+//! docs/benchmarks.md).
 
 use crate::edges::{EventId, InputEdge, Operand, ResultEdge, NONE};
 use crate::events::{

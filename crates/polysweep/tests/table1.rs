@@ -105,8 +105,11 @@ fn land_union_and_difference_with_3895_squares() {
     );
 }
 
+/// A shortcut's name, and what switches it off.
+type Switch = (&'static str, fn(&mut Shortcuts));
+
 /// Each optimisation not in the paper, switched off.
-const SWITCHES: [(&str, fn(&mut Shortcuts)); 9] = [
+const SWITCHES: [Switch; 9] = [
     ("prune_by_boxes", |s| s.prune_by_boxes = false),
     ("prune_by_winding", |s| s.prune_by_winding = false),
     ("copy_inside", |s| s.copy_inside = false),

@@ -4,8 +4,7 @@
 //! Not in the paper, which sorts the events by comparison (a priority queue). Most of a comparison sort's work is
 //! in the levels where the keys are still far apart; one pass of arithmetic on the value does them all at once.
 //! With a bucket per four keys, on Table 1's workloads, the sort takes about half the instructions of the standard
-//! library's sort (callgrind, land × 32,768 squares: 40 M → 22 M), with far fewer unpredictable branches; more
-//! buckets cost more than they save. Keys that bunch in few buckets (a grid's columns, a cluster far from an
+//! library's sort, with far fewer unpredictable branches; more buckets cost more than they save. Keys that bunch in few buckets (a grid's columns, a cluster far from an
 //! outlier) are sorted there by comparison, as before.
 
 /// The bits of a finite float as an integer that orders like the float, with -0 equal to 0.

@@ -74,7 +74,7 @@ impl SweepPoint {
     /// marked in `exact` are exact.
     pub(super) fn crossing_at(approx: [f64; 2], index: u32, exact: [bool; 2]) -> Self {
         assert!(index < INPUT, "more crossings than events can name");
-        let exact_bits = u32::from(exact[0]) * EXACT_X | u32::from(exact[1]) * EXACT_Y;
+        let exact_bits = (u32::from(exact[0]) * EXACT_X) | (u32::from(exact[1]) * EXACT_Y);
         SweepPoint {
             approx,
             tag: index | exact_bits,

@@ -43,7 +43,7 @@ impl Grid {
     }
 
     /// The column (`k` = 0) or row (`k` = 1) of coordinate `v`. (Rounding down a negative or NaN place gives 0; by way
-    /// of `u32`, as the cells are few, the conversion takes half the instructions of one to `usize`.)
+    /// of `u32`, as the cells are few: the conversion is cheaper than one to `usize`.)
     pub fn cell(&self, v: f64, k: usize) -> usize {
         (((v - self.region.min[k]) * self.scale[k]) as u32 as usize).min(self.cells - 1)
     }
@@ -191,8 +191,7 @@ impl BoxIndex {
                 return None;
             }
         }
-        // (Plain loops over each range's rows and columns: as chained iterators they took three times the
-        // instructions.)
+        // (Plain loops over each range's rows and columns: chained iterators did not compile to as little.)
         let width = grid.cells;
         let mut starts = vec![0usize; width * width + 1];
         for &[[c0, c1], [r0, r1]] in &ranges {

@@ -37,10 +37,9 @@ impl Sweep<'_> {
     /// four events one by one would (the flags of Fig. 9, the result edges and the close calls come out the same;
     /// possibleInter runs for each new pair of neighbours but the two parts themselves, which meet only at the
     /// point, and not for the pairs that the one-by-one way makes only for a moment, whose meetings are found when
-    /// they are neighbours for good). Otherwise the four go into Q, to be taken one by one. At land × 32,768
-    /// squares, where every one of the 11,494 crossings is alone, this saves three heap entries, a removal and an
-    /// insertion in S, and the in-place step's checks per crossing: 10% of all instructions. Not inlined: in the
-    /// main loop it cost 0.6% more instructions at 8 squares.
+    /// they are neighbours for good). Otherwise the four go into Q, to be taken one by one. Where crossings are
+    /// alone (a coastline against a grid), this saves three heap entries, a removal and an insertion in S, and the
+    /// in-place step's checks per crossing. Not inlined: in the main loop it made every event dearer.
     #[inline(never)]
     pub(super) fn process_crossing(&mut self, first: EventId, second: EventId) {
         let p = self.current;
