@@ -1,6 +1,6 @@
 //! The seam between the core and JavaScript: one function over flat arrays (the GeoArrow / earcut layout), so
 //! that a call crosses the boundary with a few typed arrays instead of one JS object per vertex. The conversion
-//! from and to GeoJSON lives in the package's JavaScript (`web/src/polysweep.js`). No algorithm code here.
+//! from and to GeoJSON lives in the package's JavaScript (`web/src/api.js`). No algorithm code here.
 
 use polysweep::{overlay, overlay_all, FillRule, MultiPolygon, Operation, Options, Point, Polygon};
 use wasm_bindgen::prelude::*;

@@ -21,7 +21,7 @@
 
 use crate::edges::{InputEdge, ResultEdge, NONE};
 use crate::exact::{Exact, SweepPoint};
-use crate::geometry::{MultiPolygon, Point, Polygon, Ring};
+use crate::geometry::{ring_area, MultiPolygon, Point, Polygon, Ring};
 use crate::rounding::{merge_rounded, sign_survives_rounding, snap_points};
 use crate::validate::Side;
 use std::cmp::Ordering;
@@ -180,9 +180,7 @@ fn innermost_shell_around(polygons: &[Polygon], hole: &[Point]) -> Option<usize>
                 .find(|s| *s != Side::Boundary);
             side == Some(Side::Inside)
         })
-        .min_by(|(_, p), (_, q)| {
-            crate::ring_area(&p.exterior).total_cmp(&crate::ring_area(&q.exterior))
-        })
+        .min_by(|(_, p), (_, q)| ring_area(&p.exterior).total_cmp(&ring_area(&q.exterior)))
         .map(|(i, _)| i)
 }
 
@@ -252,7 +250,7 @@ pub(crate) fn connect(
     // area, or the opposite orientation, is a sliver thinner than rounding: it is dropped (`Equal`).
     let turn: Vec<Ordering> = (rings.iter().zip(&written))
         .map(|(ring, rounded)| {
-            let area = crate::ring_area(rounded);
+            let area = ring_area(rounded);
             let rounded_turn = area.partial_cmp(&0.0).unwrap_or(Ordering::Equal);
             if sign_survives_rounding(rounded, area) {
                 return rounded_turn;

@@ -1,5 +1,6 @@
 //! The one error type. Bad input names where it is: operand, polygon, ring and vertex.
 
+use crate::geometry::{MAX_COORDINATE, MIN_COORDINATE};
 use std::fmt;
 
 /// Where a bad vertex is: indices into the operands passed to the operation (0 = subject, 1 = clipping for the
@@ -58,8 +59,8 @@ impl fmt::Display for Error {
             Error::CoordinateOutOfRange { at, value } => write!(
                 f,
                 "{at}: coordinate {value:e} is out of range (its magnitude must be 0 or between {:e} and {:e})",
-                crate::MIN_COORDINATE,
-                crate::MAX_COORDINATE
+                MIN_COORDINATE,
+                MAX_COORDINATE
             ),
             Error::TooLarge { limit } => write!(
                 f,

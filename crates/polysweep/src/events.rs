@@ -27,8 +27,8 @@ pub(crate) use queue::{EventQueue, Head};
 use sort::ordered_bits;
 
 /// 40 bytes: the events are the sweep's largest array, read front to back and, for an edge's other end or a
-/// neighbour's, far from where the sweep is, so their size is most of its memory traffic. (Doubling it to 128 bytes
-/// made land × 32,768 squares take 1.5 times as long.) What the sweep reads of an edge while the edge is in S is in
+/// neighbour's, far from where the sweep is, so their size is most of its memory traffic. (Larger events made the
+/// largest benchmark workloads markedly slower.) What the sweep reads of an edge while the edge is in S is in
 /// its node instead (see [`crate::sweep::InStatus`]).
 #[derive(Clone, Debug)]
 pub(crate) struct SweepEvent {

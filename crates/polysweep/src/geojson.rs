@@ -5,7 +5,7 @@
 //! Other geometry types (points, lines) carry no area and are skipped, so a mixed collection still loads. Coordinates
 //! are only read here; whether they are usable is checked by the operations, which name the offending vertex.
 
-use crate::{MultiPolygon, Polygon};
+use crate::geometry::{MultiPolygon, Polygon};
 use serde_json::{json, Value};
 use std::fmt;
 

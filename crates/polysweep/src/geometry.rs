@@ -236,3 +236,10 @@ pub(crate) fn closed(ring: &[Point]) -> Cow<'_, [Point]> {
         Cow::Owned(ring.iter().chain(ring.first()).copied().collect())
     }
 }
+
+/// Largest coordinate magnitude accepted: 2^200. Within it (and above [`MIN_COORDINATE`]) the products formed by
+/// the exact predicates neither overflow nor underflow, which their proofs assume.
+pub const MAX_COORDINATE: f64 = (1u128 << 100) as f64 * (1u128 << 100) as f64;
+
+/// Smallest non-zero coordinate magnitude accepted: 2^-200.
+pub const MIN_COORDINATE: f64 = 1.0 / MAX_COORDINATE;

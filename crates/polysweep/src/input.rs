@@ -3,13 +3,10 @@
 use crate::edges::{InputEdge, Operand};
 use crate::error::{Error, Location};
 use crate::exact::Line;
-use crate::geometry::{larger, next_around, open_len, smaller, MultiPolygon, Point, Polygon};
-
-/// Largest coordinate magnitude accepted: 2^200. Within it (and above [`MIN_COORDINATE`]) the products formed by
-/// the exact predicates neither overflow nor underflow, which their proofs assume.
-pub const MAX_COORDINATE: f64 = (1u128 << 100) as f64 * (1u128 << 100) as f64;
-/// Smallest non-zero coordinate magnitude accepted: 2^-200.
-pub const MIN_COORDINATE: f64 = 1.0 / MAX_COORDINATE;
+use crate::geometry::{
+    larger, next_around, open_len, smaller, MultiPolygon, Point, Polygon, MAX_COORDINATE,
+    MIN_COORDINATE,
+};
 
 /// Checks every coordinate of `operand` (its index among the operation's operands is `index`), and returns the box
 /// of each of its polygons (of all its rings: a hole may reach outside its shell), made on the same pass. The pass

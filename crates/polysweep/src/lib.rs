@@ -98,32 +98,14 @@ pub mod robustness {}
 
 pub use error::{Error, Location};
 pub use geometry::{ring_area, MultiPolygon, Point, Polygon, Ring};
-pub use input::{MAX_COORDINATE, MIN_COORDINATE};
+pub use geometry::{MAX_COORDINATE, MIN_COORDINATE};
 pub use options::Options;
 #[doc(hidden)]
 pub use options::Shortcuts;
+pub use overlay::Stats;
 pub use select::{FillRule, Operation};
 pub use validate::{validate, RingProblem, ValidationError};
 pub use workspace::{free_working_memory, KEEP_BYTES};
-
-/// What an operation did, for display and benchmarks.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[non_exhaustive]
-pub struct Stats {
-    /// Edges swept: those of all operands, less zero-length ones and those of the polygons left out: for an
-    /// intersection or a difference, polygons whose box meets no polygon's box of the other operand, and clipping
-    /// polygons wholly outside the subject away from its edges; for an intersection also those copied to the
-    /// result, wholly inside the subject and apart from the others; for a union, clipping polygons wholly inside it;
-    /// for a union or a difference, subject polygons inside one convex clipping polygon (see [`prune`]).
-    pub input_edges: usize,
-    /// Points where two edges properly cross (constructed intersection points).
-    pub crossings: usize,
-    /// Events created, including those made by subdivision.
-    pub events: usize,
-    /// Extra sweeps over the rounded result because rounding put vertices within a few ulps of each other (see
-    /// the robustness page). Almost always 0.
-    pub repair_passes: usize,
-}
 
 /// Computes `operation` on `subject` and `clipping` (for [`Operation::Difference`], subject minus clipping).
 pub fn overlay(

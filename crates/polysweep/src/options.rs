@@ -38,17 +38,18 @@ impl Options {
 
 /// The optimisations not in the paper, each behind one switch. Each is exact: with any of them off, an operation
 /// computes the same exact result (see docs/architecture.md for the argument of each). Only the last bits of a
-/// result rounded near a close call can depend on which polygons were swept (see [`crate::prune`]).
+/// result rounded near a close call can depend on which polygons and events were swept (see `prune`).
 #[doc(hidden)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Shortcuts {
     /// Leave out polygons whose box meets no polygon's box of the other operand, where they cannot change the
-    /// result (intersection, difference).
+    /// result (of either operand for an intersection, of the clipping operand for a difference).
     pub prune_by_boxes: bool,
     /// Leave out clipping polygons that lie wholly inside or outside the subject, known from the subject's winding
     /// number on a grid.
     pub prune_by_winding: bool,
-    /// An intersection copies clipping polygons wholly inside the subject and apart from the others to its result.
+    /// An intersection copies clipping polygons wholly inside the subject and apart from the others to its result
+    /// (only those that `prune_by_winding` has found inside: off with it).
     pub copy_inside: bool,
     /// A union or a difference leaves out subject polygons inside one convex clipping polygon.
     pub prune_inside_convex: bool,

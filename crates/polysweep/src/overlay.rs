@@ -8,13 +8,15 @@
 //! ```
 
 use crate::edges::{InputEdge, NONE};
+use crate::error::Error;
 use crate::events::MAX_EVENTS;
+use crate::geometry::MultiPolygon;
 use crate::input::{self, Bounds};
 use crate::options::Options;
 use crate::select::{Operation, Selection};
 use crate::sweep::Sweep;
 use crate::workspace::{self, Workspace};
-use crate::{connect, prune, rounding, Error, MultiPolygon, Stats};
+use crate::{connect, prune, rounding};
 
 /// `operation` on `subject` and `clipping`, in this thread's working memory.
 pub(crate) fn overlay_pair(
@@ -225,4 +227,24 @@ fn sweep_once(
     );
     sweep.give_back(workspace);
     Ok((result, stats, suspect || snapped))
+}
+
+/// What an operation did, for display and benchmarks.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Stats {
+    /// Edges swept: those of all operands, less zero-length ones and those of the polygons left out: for an
+    /// intersection, polygons whose box meets no polygon's box of the other operand, for a difference clipping
+    /// polygons whose box meets none of the subject's; for both, clipping polygons wholly outside the subject away
+    /// from its edges; for an intersection also those copied to the result, wholly inside the subject and apart
+    /// from the others; for a union, clipping polygons wholly inside it; for a union or a difference, subject
+    /// polygons inside one convex clipping polygon (see docs/architecture.md).
+    pub input_edges: usize,
+    /// Points where two edges properly cross (constructed intersection points).
+    pub crossings: usize,
+    /// Events created, including those made by subdivision.
+    pub events: usize,
+    /// Extra sweeps over the rounded result because rounding put vertices within a few ulps of each other (see
+    /// the robustness page). Almost always 0.
+    pub repair_passes: usize,
 }

@@ -3,10 +3,9 @@
 //! Where no edge of an operand passes, its winding number cannot change: a clipping polygon whose box lies in such
 //! a place and outside the subject cannot change an intersection or a difference, and one inside it cannot change
 //! a union, so it is left out of the sweep (see [`plan`]). This is what makes clipping a coastline
-//! with a grid of tiles cost little more than the tiles that meet the coast: at land × 32,768 squares, most
-//! squares are out at sea. Of those inside, an intersection copies to its result the ones it can tell are their
-//! own part of it, simple rings apart from the other tiles (see [`copied_whole`]): at 32,768 squares, 8,510 of
-//! them, and 34,040 edges fewer to sweep.
+//! with a grid of tiles cost little more than the tiles that meet the coast: most tiles lie out at sea. Of those
+//! inside, an intersection copies to its result the ones it can tell are their own part of it, simple rings apart
+//! from the other tiles (see [`copied_whole`]).
 //!
 //! [`KnownWinding`] finds the winding number of all the places at once, on a grid (see [`Grid`]):
 //! - a cell that no edge's box touches has no edge in it, so one winding number holds in all of it, and in all of a
@@ -25,8 +24,7 @@
 //! The other way round, a subject polygon inside the clipping operand cannot change a union or a difference
 //! either. A union or a difference leaves out a subject polygon whose box, grown by the margin, lies inside one
 //! convex clipping polygon and meets no other one's box (see [`inside_one_convex`]; not a grid: one convex ring is
-//! told exactly by the corners of the box). At land × 3,895 squares these are the 7,768 edges of islands inside
-//! the squares. It stays exact together with leaving out clipping polygons inside (union) or outside (difference)
+//! told exactly by the corners of the box): islands inside a tile, say. It stays exact together with leaving out clipping polygons inside (union) or outside (difference)
 //! the subject. Each polygon left out lies in a grown box that no edge of the other operand passes through. Where a
 //! subject polygon's box and a clipping polygon's box overlap, neither box lies inside the other (it would hold
 //! the other polygon's edges), so part of each lies outside the other, where that other polygon winds around
@@ -284,7 +282,7 @@ mod tests {
         let ring = |points: &[[f64; 2]]| -> Vec<Point> {
             points.iter().map(|&[x, y]| Point::new(x, y)).collect()
         };
-        // The margin `overlay_pair` gives coordinates of these magnitudes.
+        // The margin the pipeline gives coordinates of these magnitudes.
         let margin = |magnitude: f64| 2.0 * crate::rounding::clearance(magnitude);
         let clockwise = ring(&[[1.0, 1.0], [0.0, 1.0], [0.0, 0.0], [1.0, 0.0]]);
         assert_eq!(
@@ -398,7 +396,7 @@ mod tests {
                 Bounds::at(&Point::new(x, y)).around(&Bounds::at(&Point::new(x + 0.5, y + 0.5)))
             })
             .collect();
-        // The margin `overlay_pair` uses, for coordinates up to 100 (the boxes lie far inside the ring anyway).
+        // The margin the pipeline uses, for coordinates up to 100 (the boxes lie far inside the ring anyway).
         let margin = 2.0 * crate::rounding::clearance(100.0);
         let inside = inside_one_convex(&operand, &boxes, &judged, margin);
         let count = inside.iter().filter(|&&i| i).count();

@@ -1,4 +1,4 @@
-//! Selecting the result edges (§4, Fig. 9, Fig. 10; fill rules of §7.3).
+//! Selecting the result edges (§4, Fig. 9, Fig. 10; the even-odd rule of §7.3, and non-zero, not in the paper).
 //!
 //! The paper reads three flags of the edge below (`pl`, `inOut`, `inside`, Fig. 9) to know whether an edge lies
 //! inside the other polygon. Here every edge carries the winding numbers of both operands for the region just

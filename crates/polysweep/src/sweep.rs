@@ -43,7 +43,7 @@ use crate::workspace::{take, Workspace};
 
 mod close_calls;
 mod shortcuts;
-use crate::Error;
+use crate::error::Error;
 use std::cmp::Ordering;
 
 /// What S keeps of an edge while the edge is in it: what the status order reads (see [`Sweep::is_below`]), which

@@ -13,7 +13,7 @@ use crate::exact::SweepPoint;
 use std::cell::Cell;
 use std::mem::size_of;
 
-/// The most memory a thread keeps between operations: 64 MiB, enough for land × 32,768 squares (Table 1's largest
+/// The most memory a thread keeps between operations: 64 MiB, enough for land × 32,768 squares (the benchmark's largest
 /// workload, 383,318 events).
 pub const KEEP_BYTES: usize = 64 << 20;
 

@@ -1,5 +1,5 @@
 //! The paper's Table 1 workload on real data (tests/data, see its README): Natural Earth land intersected with
-//! grids of squares. Result areas must match the reference areas of ../shared/data/README.md (all exact float
+//! grids of squares. Result areas must match the reference areas of tests/data/README.md (all exact float
 //! engines agree to these digits) to 1e-9 relative, the number of edge crossings must match, and every result must
 //! pass the validator. With any optimisation that is not in the paper switched off, the results are the same.
 

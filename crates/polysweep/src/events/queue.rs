@@ -17,7 +17,7 @@ pub(crate) struct Head {
     from_heap: bool,
 }
 
-/// The event-point set Q of Fig. 5: the initial events, already in order (see [`initial_events`]), and a binary
+/// The event-point set Q of Fig. 5: the initial events, already in order (see [`super::initial_events`]), and a binary
 /// heap for the events that subdivision adds. Popping takes the smaller head; the order is the same as one priority
 /// queue's.
 pub(crate) struct EventQueue {

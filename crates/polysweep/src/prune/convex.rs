@@ -10,7 +10,7 @@ use std::cmp::Ordering;
 /// `boxes`), away from its edges and from the other polygons: their box grown by `margin` has its corners strictly
 /// inside that polygon, a strictly convex ring without holes, and meets no other polygon's box. Throughout the grown
 /// box, then, no edge of `operand` passes and its winding number is that ring's, ±1: inside under either fill rule.
-/// A union or a difference leaves such polygons out (see `overlay_pair`). Where a box's cells hold too many others
+/// A union or a difference leaves such polygons out (see [`super::plan`]). Where a box's cells hold too many others
 /// (see [`BoxIndex`]), or past a budget of orientation tests linear in the vertices and polygons, the answer is "not
 /// inside": the pass stays linear.
 pub(crate) fn inside_one_convex(

@@ -119,7 +119,7 @@ pub(crate) fn running_sums(row: &mut [i32]) {
 }
 
 /// Which cells of a grid some box of a set touches: tells in constant time whether another box may meet a box of
-/// the set. Its "no" is exact, so a polygon it rules out can be left out of the sweep (see `overlay_with_stats`);
+/// the set. Its "no" is exact, so a polygon it rules out can be left out of the sweep (see [`super::plan`]);
 /// its "yes" may be wrong by a cell.
 pub(crate) struct Coverage {
     grid: Grid,
