@@ -59,18 +59,18 @@ impl Fill {
 
     /// The screen mesh, placing every world point with `to_screen`.
     pub fn mesh(&self, to_screen: impl Fn(Point) -> Pos2, color: Color32) -> Mesh {
-        let mut mesh = Mesh::default();
-        mesh.vertices = self
-            .points
-            .iter()
+        let vertices = (self.points.iter())
             .map(|&p| Vertex {
                 pos: to_screen(p),
                 uv: Pos2::ZERO,
                 color,
             })
             .collect();
-        mesh.indices.clone_from(&self.triangles);
-        mesh
+        Mesh {
+            vertices,
+            indices: self.triangles.clone(),
+            ..Mesh::default()
+        }
     }
 }
 

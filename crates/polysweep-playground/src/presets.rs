@@ -8,7 +8,7 @@ use polysweep::{geojson, MultiPolygon};
 pub enum Preset {
     /// Fig. 3: two concave polygons; every operation has several parts.
     Fig3,
-    /// Fig. 2: a vertex of one polygon on an edge of the other (the degenerate case of §2).
+    /// Fig. 2: a vertex of one polygon on an edge of the other (the degenerate case of §1).
     Fig2,
     /// Fig. 11: a self-intersecting polygon set under the even-odd rule (§7.3).
     Fig11,

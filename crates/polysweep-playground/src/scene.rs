@@ -96,9 +96,9 @@ impl Scene {
 
     /// Swaps in a state from the history, bumping the revision of each operand it changes.
     fn restore(&mut self, state: [MultiPolygon; 2]) -> [MultiPolygon; 2] {
-        for i in 0..2 {
-            if state[i] != self.operands[i] {
-                self.revisions[i] += 1;
+        for ((revision, new), old) in self.revisions.iter_mut().zip(&state).zip(&self.operands) {
+            if new != old {
+                *revision += 1;
             }
         }
         self.generation += 1;

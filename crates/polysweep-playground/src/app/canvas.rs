@@ -1,0 +1,207 @@
+//! The canvas: fitting the view to the data, then painting the grid, the operands' fills and outlines, the result,
+//! the ring being drawn, the vertex handles and the vertex an error names.
+
+use super::input::Drag;
+use super::{
+    Playground, BACKGROUND, HANDLE_RADIUS, OPERAND_EDGE, OPERAND_FILL, RESULT_EDGE, RESULT_FILL,
+};
+use crate::scene::{Operand, VertexId};
+use eframe::egui::{self, Color32, Mesh, Pos2, Rect, Sense, Shape, Stroke};
+use polysweep::{MultiPolygon, Point};
+
+/// Above this many vertices an operand's handles are not drawn: they would cover the picture.
+const MAX_HANDLES: usize = 5000;
+
+impl Playground {
+    fn data_bounds(&self) -> Option<(Point, Point)> {
+        let points = [Operand::Subject, Operand::Clipping]
+            .into_iter()
+            .flat_map(|w| {
+                self.scene
+                    .operand(w)
+                    .0
+                    .iter()
+                    .flat_map(|p| p.rings().flatten())
+            })
+            .chain(&self.drawing);
+        points.fold(None, |b, p| {
+            let (lo, hi) = b.unwrap_or((*p, *p));
+            Some((
+                Point::new(lo.x.min(p.x), lo.y.min(p.y)),
+                Point::new(hi.x.max(p.x), hi.y.max(p.y)),
+            ))
+        })
+    }
+
+    pub(super) fn canvas(&mut self, ui: &mut egui::Ui) {
+        let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::click_and_drag());
+        let canvas = response.rect;
+        if std::mem::take(&mut self.fit_pending) {
+            if let Some((lo, hi)) = self.data_bounds() {
+                self.view.fit(canvas, lo, hi);
+            }
+        }
+        self.interact(ui, &response);
+        let settled =
+            self.drag.is_none() || ui.input(|i| i.pointer.time_since_last_movement() > 0.15);
+        let up_to_date = self.refresh(settled);
+        if !up_to_date {
+            ui.ctx()
+                .request_repaint_after(std::time::Duration::from_millis(160));
+        }
+        let error_at = match &self.derived.outcome {
+            Some(Err(e)) => e.location(),
+            _ => None,
+        };
+        let error_vertex = error_at.and_then(|at| VertexId::from_location(&self.scene, &at));
+        let view = self.view;
+        let to_screen = |p: Point| view.to_screen(canvas, p);
+
+        painter.rect_filled(canvas, 0.0, BACKGROUND);
+        if self.snap {
+            self.paint_grid(&painter, canvas);
+        }
+        for (fill, color) in self.derived.region_fills.iter().zip(OPERAND_FILL) {
+            painter.add(Shape::mesh(fill.mesh(to_screen, color)));
+        }
+        painter.add(Shape::mesh(
+            self.derived.result_fill.mesh(to_screen, RESULT_FILL),
+        ));
+        if let Some(Ok(outcome)) = &self.derived.outcome {
+            paint_outline(
+                &painter,
+                canvas,
+                &outcome.result,
+                to_screen,
+                Stroke::new(1.0, RESULT_EDGE),
+            );
+        }
+        for which in [Operand::Subject, Operand::Clipping] {
+            let operand = self.scene.operand(which);
+            let edge = OPERAND_EDGE[which.index()];
+            paint_outline(&painter, canvas, operand, to_screen, Stroke::new(1.5, edge));
+            if operand.vertex_count() <= MAX_HANDLES {
+                let radius = if which == self.active { 3.5 } else { 2.5 };
+                for p in operand.0.iter().flat_map(|p| p.rings().flatten()) {
+                    painter.circle_filled(to_screen(*p), radius, edge);
+                }
+            }
+        }
+        self.paint_drawing(&painter, &response, to_screen);
+        let pointer_world = response.hover_pos().map(|p| self.view.to_world(canvas, p));
+        let hovered = pointer_world.and_then(|p| self.vertex_under(p));
+        if let Some(id) = hovered.or(match self.drag {
+            Some(Drag::Vertex(id, _)) => Some(id),
+            _ => None,
+        }) {
+            if let Some(p) = self.scene.point(id) {
+                painter.circle_stroke(
+                    to_screen(p),
+                    HANDLE_RADIUS,
+                    Stroke::new(2.0, Color32::WHITE),
+                );
+            }
+        }
+        if let Some(p) = error_vertex.and_then(|id| self.scene.point(id)) {
+            painter.circle_stroke(to_screen(p), 10.0, Stroke::new(3.0, Color32::RED));
+        }
+        if !up_to_date {
+            let text = "large data: the result follows when the pointer rests";
+            painter.text(
+                canvas.left_top() + egui::vec2(8.0, 6.0),
+                egui::Align2::LEFT_TOP,
+                text,
+                egui::FontId::proportional(13.0),
+                Color32::LIGHT_GRAY,
+            );
+        }
+        if let Some(p) = pointer_world {
+            let text = format!("{:.6}, {:.6}", p.x, p.y);
+            painter.text(
+                canvas.right_bottom() - egui::vec2(8.0, 6.0),
+                egui::Align2::RIGHT_BOTTOM,
+                text,
+                egui::FontId::monospace(12.0),
+                Color32::GRAY,
+            );
+        }
+    }
+
+    fn paint_grid(&self, painter: &egui::Painter, canvas: Rect) {
+        let (lo, hi) = (
+            self.view.to_world(canvas, canvas.left_bottom()),
+            self.view.to_world(canvas, canvas.right_top()),
+        );
+        let stroke = Stroke::new(1.0, Color32::from_gray(38));
+        for x in self.view.grid_lines(lo.x, hi.x, 500) {
+            let sx = self.view.to_screen(canvas, Point::new(x, 0.0)).x;
+            painter.vline(sx, canvas.y_range(), stroke);
+        }
+        for y in self.view.grid_lines(lo.y, hi.y, 500) {
+            let sy = self.view.to_screen(canvas, Point::new(0.0, y)).y;
+            painter.hline(canvas.x_range(), sy, stroke);
+        }
+    }
+
+    fn paint_drawing(
+        &self,
+        painter: &egui::Painter,
+        response: &egui::Response,
+        to_screen: impl Fn(Point) -> Pos2,
+    ) {
+        if self.drawing.is_empty() {
+            return;
+        }
+        let edge = OPERAND_EDGE[self.active.index()];
+        let mut points: Vec<Pos2> = self.drawing.iter().map(|p| to_screen(*p)).collect();
+        if let Some(pointer) = response.hover_pos() {
+            points.push(pointer);
+        }
+        painter.add(Shape::line(points, Stroke::new(1.5, edge)));
+        for p in &self.drawing {
+            painter.circle_filled(to_screen(*p), 3.5, edge);
+        }
+        painter.circle_stroke(
+            to_screen(self.drawing[0]),
+            HANDLE_RADIUS,
+            Stroke::new(1.5, edge),
+        );
+    }
+}
+
+/// Draws every ring of `m` that is on screen, as one mesh of a thin quad per edge. egui's own path stroke joins
+/// edges with miters, which shoot far out at the hairpin turns of real coastlines; separate quads have no joins.
+/// Vertices closer than a pixel to the last one drawn are skipped: zoomed out, a coastline has many per pixel.
+fn paint_outline(
+    painter: &egui::Painter,
+    canvas: Rect,
+    m: &MultiPolygon,
+    to_screen: impl Fn(Point) -> Pos2,
+    stroke: Stroke,
+) {
+    let mut mesh = Mesh::default();
+    let mut points: Vec<Pos2> = Vec::new();
+    for ring in m.0.iter().flat_map(|p| p.rings()) {
+        points.clear();
+        for p in ring.iter().chain(ring.first()) {
+            let q = to_screen(*p);
+            if points.last().is_none_or(|last| last.distance_sq(q) >= 1.0) {
+                points.push(q);
+            }
+        }
+        if points.len() < 3 || !Rect::from_points(&points).intersects(canvas) {
+            continue;
+        }
+        for edge in points.windows(2) {
+            let (a, b) = (edge[0], edge[1]);
+            let half = (b - a).normalized().rot90() * (stroke.width / 2.0);
+            let base = mesh.vertices.len() as u32;
+            for corner in [a + half, b + half, b - half, a - half] {
+                mesh.colored_vertex(corner, stroke.color);
+            }
+            mesh.add_triangle(base, base + 1, base + 2);
+            mesh.add_triangle(base, base + 2, base + 3);
+        }
+    }
+    painter.add(Shape::mesh(mesh));
+}
