@@ -97,6 +97,8 @@ pub fn overlay_flat(
     let fill_rule = match fill_rule {
         0 => FillRule::EvenOdd,
         1 => FillRule::NonZero,
+        2 => FillRule::Positive,
+        3 => FillRule::Negative,
         _ => {
             return Err(JsError::new(
                 "fill rule must be 0 (even-odd) or 1 (non-zero)",

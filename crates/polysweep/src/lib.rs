@@ -19,7 +19,8 @@
 //! ## Input
 //! Each operand is a polygon set ([`MultiPolygon`]). Its interior is defined by a [`FillRule`] over all its rings
 //! together: even-odd by default (§7.3 of the paper: ring orientation does not matter, rings may cross themselves
-//! and each other, a ring inside another is a hole), or non-zero. Rings may be open or closed; zero-length edges
+//! and each other, a ring inside another is a hole), or by the winding number: non-zero, positive or negative (as
+//! Clipper2 and i_overlay offer). Rings may be open or closed; zero-length edges
 //! are ignored. Coordinates must be finite with magnitude 0 or within [`MIN_COORDINATE`]..=[`MAX_COORDINATE`];
 //! anything else is an [`Error`] naming the operand, polygon, ring and vertex.
 //!

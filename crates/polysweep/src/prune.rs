@@ -102,7 +102,7 @@ pub(crate) fn plan(
     }
     if operation == Operation::Intersection && shortcuts.copy_inside {
         let copied;
-        (copied, plan.copies) = copied_whole(clipping, clipping_boxes, &inside, margin);
+        (copied, plan.copies) = copied_whole(clipping, clipping_boxes, &inside, fill_rule, margin);
         for (swept, copied) in plan.clipping.iter_mut().zip(copied) {
             *swept &= !copied;
         }
@@ -110,7 +110,8 @@ pub(crate) fn plan(
     // A subject polygon inside one convex clipping polygon, away from the others, cannot change a union or a
     // difference either (exact together with leaving out clipping polygons as above).
     if operation != Operation::Intersection && shortcuts.prune_inside_convex {
-        let inside_clipping = inside_one_convex(clipping, clipping_boxes, subject_boxes, margin);
+        let inside_clipping =
+            inside_one_convex(clipping, clipping_boxes, subject_boxes, fill_rule, margin);
         for (swept, inside) in plan.subject.iter_mut().zip(inside_clipping) {
             *swept &= !inside;
         }
@@ -284,9 +285,25 @@ mod tests {
         };
         // The margin the pipeline gives coordinates of these magnitudes.
         let margin = |magnitude: f64| 2.0 * crate::rounding::clearance(magnitude);
-        let clockwise = ring(&[[1.0, 1.0], [0.0, 1.0], [0.0, 0.0], [1.0, 0.0]]);
+        let counter_clockwise = ring(&[[1.0, 1.0], [0.0, 1.0], [0.0, 0.0], [1.0, 0.0]]);
         assert_eq!(
-            as_written(&clockwise, margin(1.0)),
+            as_written(&counter_clockwise, FillRule::Positive, margin(1.0)),
+            as_written(&counter_clockwise, FillRule::EvenOdd, margin(1.0))
+        );
+        // A counter-clockwise ring is empty under the negative rule, a clockwise one under the positive: nothing
+        // to copy.
+        assert_eq!(
+            as_written(&counter_clockwise, FillRule::Negative, margin(1.0)),
+            None
+        );
+        let clockwise: Vec<Point> = counter_clockwise.iter().rev().copied().collect();
+        assert_eq!(
+            as_written(&clockwise, FillRule::Positive, margin(1.0)),
+            None
+        );
+        assert!(as_written(&clockwise, FillRule::Negative, margin(1.0)).is_some());
+        assert_eq!(
+            as_written(&counter_clockwise, FillRule::EvenOdd, margin(1.0)),
             Some(ring(&[
                 [0.0, 0.0],
                 [1.0, 0.0],
@@ -297,7 +314,7 @@ mod tests {
         );
         let e = f64::powi(2.0, -47);
         let sliver = ring(&[[40.0, 40.0], [41.0 + e, 41.0], [41.0, 41.0 - e]]);
-        assert_eq!(as_written(&sliver, 0.0), None);
+        assert_eq!(as_written(&sliver, FillRule::EvenOdd, 0.0), None);
         let close = ring(&[
             [40.0, 40.0],
             [43.0, 41.0],
@@ -305,7 +322,7 @@ mod tests {
             [41.0, 121.0 / 3.0],
             [40.0, 43.0],
         ]);
-        assert_eq!(as_written(&close, margin(43.0)), None);
+        assert_eq!(as_written(&close, FillRule::EvenOdd, margin(43.0)), None);
         // The same with the vertex farther off: written.
         let apart = ring(&[
             [40.0, 40.0],
@@ -314,7 +331,7 @@ mod tests {
             [41.0, 40.5],
             [40.0, 43.0],
         ]);
-        assert!(as_written(&apart, margin(43.0)).is_some());
+        assert!(as_written(&apart, FillRule::EvenOdd, margin(43.0)).is_some());
     }
 
     /// A box is inside one convex polygon only where, grown by the margin, its corners lie strictly inside a
@@ -373,8 +390,21 @@ mod tests {
         let margin = 2.0 * crate::rounding::clearance(128.0);
         let expected: Vec<bool> = cases.iter().map(|&(_, inside)| inside).collect();
         assert_eq!(
-            inside_one_convex(&operand, &boxes, &judged, margin),
+            inside_one_convex(&operand, &boxes, &judged, FillRule::EvenOdd, margin),
             expected
+        );
+        // Under the positive rule the clockwise square at x = 20 is empty, under the negative rule the
+        // counter-clockwise ones are.
+        let only = |keep: [usize; 2]| -> Vec<bool> {
+            (0..expected.len()).map(|i| keep.contains(&i)).collect()
+        };
+        assert_eq!(
+            inside_one_convex(&operand, &boxes, &judged, FillRule::Positive, margin),
+            only([0, 6])
+        );
+        assert_eq!(
+            inside_one_convex(&operand, &boxes, &judged, FillRule::Negative, margin),
+            only([2, 2])
         );
     }
 
@@ -398,7 +428,7 @@ mod tests {
             .collect();
         // The margin the pipeline uses, for coordinates up to 100 (the boxes lie far inside the ring anyway).
         let margin = 2.0 * crate::rounding::clearance(100.0);
-        let inside = inside_one_convex(&operand, &boxes, &judged, margin);
+        let inside = inside_one_convex(&operand, &boxes, &judged, FillRule::EvenOdd, margin);
         let count = inside.iter().filter(|&&i| i).count();
         assert!(count > 0 && count < 100 && inside[0], "{count}");
     }

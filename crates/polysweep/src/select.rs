@@ -40,6 +40,11 @@ pub enum FillRule {
     /// A point is inside when the winding number of the operand's rings around it is not zero (as in Clipper2
     /// and i_overlay): rings are taken with their orientation as given.
     NonZero,
+    /// A point is inside when the winding number is positive: counter-clockwise rings add, clockwise ones take
+    /// away (as in Clipper2 and i_overlay).
+    Positive,
+    /// A point is inside when the winding number is negative: the mirror of [`FillRule::Positive`].
+    Negative,
 }
 
 impl FillRule {
@@ -47,6 +52,8 @@ impl FillRule {
         match self {
             FillRule::EvenOdd => winding % 2 != 0,
             FillRule::NonZero => winding != 0,
+            FillRule::Positive => winding > 0,
+            FillRule::Negative => winding < 0,
         }
     }
 }

@@ -59,7 +59,19 @@ fn inside(m: &MultiPolygon, p: Point, fill_rule: FillRule) -> bool {
     match fill_rule {
         FillRule::EvenOdd => inside_even_odd(m, p),
         FillRule::NonZero => winding_number(m, p) != 0,
+        FillRule::Positive => winding_number(m, p) > 0,
+        FillRule::Negative => winding_number(m, p) < 0,
     }
+}
+
+/// Every fill rule.
+fn any_fill_rule() -> impl Strategy<Value = FillRule> {
+    prop_oneof![
+        Just(FillRule::EvenOdd),
+        Just(FillRule::NonZero),
+        Just(FillRule::Positive),
+        Just(FillRule::Negative),
+    ]
 }
 
 fn keeps(op: Operation, a: bool, b: bool) -> bool {
@@ -144,19 +156,23 @@ proptest! {
     }
 
     #[test]
-    fn membership_under_the_non_zero_rule(a in grid_operand(5), b in grid_operand(5)) {
+    fn membership_under_the_winding_rules(
+        a in grid_operand(5),
+        b in grid_operand(5),
+        fill_rule in prop_oneof![Just(FillRule::NonZero), Just(FillRule::Positive), Just(FillRule::Negative)],
+    ) {
         let (a, b) = (operand(a, 1.0, 0.0), operand(b, 1.0, 0.0));
-        check_membership(&a, &b, &samples(5, 1.0, 0.0), FillRule::NonZero)?;
+        check_membership(&a, &b, &samples(5, 1.0, 0.0), fill_rule)?;
     }
 
     /// Many small squares as the clipping operand, enough polygons and vertices to be judged by the subject's
-    /// winding number away from its edges (and some left out, see `prune`), against random rings under either
+    /// winding number away from its edges (and some left out, see `prune`), against random rings under every
     /// fill rule. Each square covers one sample point; its sides lie well apart from the samples.
     #[test]
     fn membership_with_many_small_clipping_squares(
         a in grid_operand(10),
         at in prop::collection::vec((0i32..=10, 0i32..=10), 16..=60),
-        non_zero in any::<bool>(),
+        fill_rule in any_fill_rule(),
     ) {
         let squares: Vec<Vec<Vec<[f64; 2]>>> = (at.iter())
             .map(|&(i, j)| {
@@ -165,7 +181,6 @@ proptest! {
             })
             .collect();
         let (a, b) = (operand(a, 1.0, 0.0), MultiPolygon::from_coordinates(&squares));
-        let fill_rule = if non_zero { FillRule::NonZero } else { FillRule::EvenOdd };
         check_membership(&a, &b, &samples(10, 1.0, 0.0), fill_rule)?;
     }
 
@@ -174,7 +189,7 @@ proptest! {
     /// then leaves the shapes inside out of the sweep, see `prune::inside_one_convex`); a triangle across the block
     /// (convex, but its box holds shapes that it does not); an L, which is not convex; a
     /// five-pointed star, whose middle it winds around twice (outside it under the even-odd rule); or a square with
-    /// another over one of its corners, whose box the shapes' boxes may meet too. Under either fill rule.
+    /// another over one of its corners, whose box the shapes' boxes may meet too. Under every fill rule.
     #[test]
     fn membership_with_subject_shapes_inside_convex_clipping_polygons(
         shapes in prop::collection::vec(
@@ -182,7 +197,7 @@ proptest! {
             16..=40,
         ),
         around in prop::collection::vec(0u8..8, 16),
-        non_zero in any::<bool>(),
+        fill_rule in any_fill_rule(),
     ) {
         // Block k of a 4 × 4 layout spans [4i, 4i + 2] × [4j, 4j + 2]; its clipping polygon reaches half a unit
         // or more beyond it, so that no sample or shape vertex lies on that polygon's edges.
@@ -225,7 +240,6 @@ proptest! {
                 _ => {}
             }
         }
-        let fill_rule = if non_zero { FillRule::NonZero } else { FillRule::EvenOdd };
         check_membership(&subject, &MultiPolygon(clipping), &samples(16, 1.0, 0.0), fill_rule)?;
     }
 
@@ -242,7 +256,7 @@ proptest! {
             (prop::collection::vec((0i32..=4, 0i32..=4), 3..=8), 0u8..3, any::<bool>()),
             16..=40,
         ),
-        non_zero in any::<bool>(),
+        fill_rule in any_fill_rule(),
         scaled in any::<bool>(),
     ) {
         let scale = if scaled { 0.1 } else { 1.0 };
@@ -276,7 +290,7 @@ proptest! {
         });
         let subject = MultiPolygon(vec![Polygon::new((0..4).flat_map(side).collect(), vec![])]);
         let clipping = MultiPolygon(polygons);
-        let options = Options::default().with_fill_rule(if non_zero { FillRule::NonZero } else { FillRule::EvenOdd });
+        let options = Options::default().with_fill_rule(fill_rule);
         let sorted = |m: MultiPolygon| {
             let mut polygons = m.to_coordinates();
             polygons.sort_by(|a, b| a.partial_cmp(b).unwrap());

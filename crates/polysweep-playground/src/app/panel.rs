@@ -31,10 +31,12 @@ impl Playground {
                 format!("{}   [{}]", op.label(), n + 1),
             );
         }
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             ui.label("Fill rule:");
             ui.radio_value(&mut self.fill_rule, FillRule::EvenOdd, "even-odd");
             ui.radio_value(&mut self.fill_rule, FillRule::NonZero, "non-zero");
+            ui.radio_value(&mut self.fill_rule, FillRule::Positive, "positive");
+            ui.radio_value(&mut self.fill_rule, FillRule::Negative, "negative");
         });
         ui.separator();
 

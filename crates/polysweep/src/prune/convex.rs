@@ -3,13 +3,15 @@
 use super::grid::BoxIndex;
 use crate::geometry::{closed, next_around, open_len, orient, MultiPolygon};
 use crate::input::Bounds;
+use crate::select::FillRule;
 use crate::validate::convex_turn;
 use std::cmp::Ordering;
 
 /// Which of the polygons whose boxes are `judged` lie inside one convex polygon of `operand` (whose boxes are
 /// `boxes`), away from its edges and from the other polygons: their box grown by `margin` has its corners strictly
 /// inside that polygon, a strictly convex ring without holes, and meets no other polygon's box. Throughout the grown
-/// box, then, no edge of `operand` passes and its winding number is that ring's, ±1: inside under either fill rule.
+/// box, then, no edge of `operand` passes and its winding number is that ring's, ±1: inside under `fill_rule` when
+/// it takes that winding number for inside (every rule but the positive or negative one of the other sign).
 /// A union or a difference leaves such polygons out (see [`super::plan`]). Where a box's cells hold too many others
 /// (see [`BoxIndex`]), or past a budget of orientation tests linear in the vertices and polygons, the answer is "not
 /// inside": the pass stays linear.
@@ -17,6 +19,7 @@ pub(crate) fn inside_one_convex(
     operand: &MultiPolygon,
     boxes: &[Bounds],
     judged: &[Bounds],
+    fill_rule: FillRule,
     margin: f64,
 ) -> Vec<bool> {
     let mut inside = vec![false; judged.len()];
@@ -48,7 +51,9 @@ pub(crate) fn inside_one_convex(
                 .then(|| convex_turn(&closed(&polygon.exterior)))
                 .flatten()
         });
-        let Some(turn) = turn else {
+        let Some(turn) =
+            turn.filter(|&t| fill_rule.is_inside(if t == Ordering::Greater { 1 } else { -1 }))
+        else {
             continue;
         };
         let ring = &polygon.exterior;

@@ -6,6 +6,7 @@ use crate::geometry::{
     closed, next_around, open_len, ring_area, MultiPolygon, Point, Polygon, Ring,
 };
 use crate::input::Bounds;
+use crate::select::FillRule;
 use crate::validate::{lowest_leftmost, simple_ring_turn};
 use std::cmp::Ordering;
 
@@ -25,6 +26,7 @@ pub(crate) fn copied_whole(
     clipping: &MultiPolygon,
     boxes: &[Bounds],
     inside: &[Option<bool>],
+    fill_rule: FillRule,
     margin: f64,
 ) -> (Vec<bool>, Vec<Polygon>) {
     let candidates: Vec<bool> = (clipping.0.iter().enumerate())
@@ -44,7 +46,7 @@ pub(crate) fn copied_whole(
     let apart = apart(boxes, margin, &candidates, &listed);
     let mut polygons = Vec::with_capacity(apart.iter().filter(|&&a| a).count());
     for (p, polygon) in clipping.0.iter().enumerate().filter(|&(p, _)| apart[p]) {
-        if let Some(ring) = as_written(&polygon.exterior, margin) {
+        if let Some(ring) = as_written(&polygon.exterior, fill_rule, margin) {
             copied[p] = true;
             polygons.push(Polygon::new(ring, Vec::new()));
         }
@@ -56,10 +58,15 @@ pub(crate) fn copied_whole(
 /// walk of [`crate::connect`] begins). `None` if it is not simple, or where the sweep would write it otherwise:
 /// where its float area, by which `connect` tells a ring's orientation, has not the sign of its exact turn (a
 /// sliver, which `connect` drops), or where a vertex lies within `margin` of an edge not its own (an edge that
-/// `connect` could bend through the vertex, should the result be rounded anywhere).
-pub(super) fn as_written(ring: &[Point], margin: f64) -> Option<Ring> {
+/// `connect` could bend through the vertex, should the result be rounded anywhere). Also `None` where the ring's own
+/// region under `fill_rule` is empty: a clockwise ring under the positive rule, a counter-clockwise one under the
+/// negative.
+pub(super) fn as_written(ring: &[Point], fill_rule: FillRule, margin: f64) -> Option<Ring> {
     let (n, closed) = (open_len(ring), closed(ring));
     let turn = simple_ring_turn(&closed)?;
+    if !fill_rule.is_inside(if turn == Ordering::Greater { 1 } else { -1 }) {
+        return None;
+    }
     if ring_area(&closed).partial_cmp(&0.0) != Some(turn) || vertex_near_an_edge(&closed, margin) {
         return None;
     }
