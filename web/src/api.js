@@ -9,7 +9,14 @@
 import { overlay_flat } from './polysweep_wasm.js';
 
 const OPERATIONS = { intersection: 0, union: 1, difference: 2, xor: 3 };
-const FILL_RULES = { evenodd: 0, nonzero: 1 };
+// The codes the wasm side maps to the core's FillRule (crates/polysweep-wasm).
+const FILL_RULES = { evenodd: 0, nonzero: 1, positive: 2, negative: 3, structure: 4 };
+// Valid GeoJSON geometries that hold no area: an error where an operand's polygons are read, unless
+// {skipNonPolygonal: true} says to read them as nothing (a map app's collections mix them with polygons).
+const NON_POLYGONAL = new Set(['Point', 'MultiPoint', 'LineString', 'MultiLineString']);
+// GeometryCollections may hold GeometryCollections (RFC 7946 §3.1.8 advises against it); the bound keeps one that
+// holds itself from running the reader out of stack.
+const MAX_NESTING = 32;
 // 2^28 vertices are 4 GiB of coordinates, all of wasm32's memory: no call with more can succeed.
 const MAX_VERTICES = 2 ** 28;
 
@@ -23,6 +30,11 @@ function describe(value) {
   return String(value);
 }
 
+/** What a value that should have been a GeoJSON object is, for an error message. */
+function describeGeoJSON(value) {
+  return value && typeof value === 'object' && !Array.isArray(value) ? `GeoJSON type ${describe(value.type)}` : describe(value);
+}
+
 /** Is `key` one of `table`'s own names (not an inherited one such as 'toString', nor a non-string)? */
 const isKeyOf = (table, key) => typeof key === 'string' && Object.hasOwn(table, key);
 
@@ -30,15 +42,21 @@ function isOptions(arg) {
   return arg !== null && typeof arg === 'object' && !Array.isArray(arg) && !('type' in arg);
 }
 
-function fillRuleOf(options) {
+/** The options object read and checked: `{fillRule}` as the core's code, and `{skipNonPolygonal}`. */
+function optionsOf(options) {
   if (options !== undefined && options !== null && typeof options !== 'object') {
     throw new TypeError(`options must be an object such as {fillRule: 'nonzero'}, not ${describe(options)}`);
   }
   const rule = options?.fillRule ?? 'evenodd';
   if (!isKeyOf(FILL_RULES, rule)) {
-    throw new TypeError(`options.fillRule must be 'evenodd' or 'nonzero', not ${describe(rule)}`);
+    const names = Object.keys(FILL_RULES).map((name) => `'${name}'`);
+    throw new TypeError(`options.fillRule must be ${names.slice(0, -1).join(', ')} or ${names.at(-1)}, not ${describe(rule)}`);
   }
-  return FILL_RULES[rule];
+  const skipNonPolygonal = options?.skipNonPolygonal ?? false;
+  if (typeof skipNonPolygonal !== 'boolean') {
+    throw new TypeError(`options.skipNonPolygonal must be true or false, not ${describe(skipNonPolygonal)}`);
+  }
+  return { fillRule: FILL_RULES[rule], skipNonPolygonal };
 }
 
 /**
@@ -64,76 +82,123 @@ function isPolygonCoordinates(geom) {
   return false;
 }
 
-/** The MultiPolygon coordinates of a Polygon or MultiPolygon geometry; `what` names it in errors. */
-function geometryCoordinates(geom, what) {
-  if (geom?.type !== 'Polygon' && geom?.type !== 'MultiPolygon') {
-    const found = geom && typeof geom === 'object' ? `GeoJSON type ${describe(geom.type)}` : describe(geom);
-    throw new TypeError(`${what}: expected a Polygon or MultiPolygon, not ${found}`);
+/**
+ * Adds the polygons of GeoJSON geometry `geom` to `parts` as `{coordinates, where}` (MultiPolygon coordinates, and
+ * the operand and member they came from, for errors): a Polygon or MultiPolygon as itself, a GeometryCollection as
+ * its members' polygons, a non-polygonal geometry as an error or, with `skip`, as nothing.
+ */
+function addGeometry(geom, where, parts, skip, depth) {
+  const type = geom?.type;
+  if (type === 'Polygon' || type === 'MultiPolygon') {
+    if (!Array.isArray(geom.coordinates)) throw new TypeError(`${where}: the ${type}'s coordinates must be an array`);
+    parts.push({ coordinates: type === 'Polygon' ? [geom.coordinates] : geom.coordinates, where });
+  } else if (type === 'GeometryCollection') {
+    const members = geom.geometries;
+    if (!Array.isArray(members)) throw new TypeError(`${where}: the GeometryCollection's geometries must be an array`);
+    if (depth === MAX_NESTING) throw new RangeError(`${where}: GeometryCollections nested more than ${MAX_NESTING} deep`);
+    for (let i = 0; i < members.length; i++) addGeometry(members[i], `${where}, geometry ${i}`, parts, skip, depth + 1);
+  } else if (NON_POLYGONAL.has(type)) {
+    if (!skip) throw new TypeError(`${where}: a ${type} is not a polygon (pass {skipNonPolygonal: true} to skip it)`);
+  } else {
+    throw new TypeError(`${where}: expected a Polygon, MultiPolygon or GeometryCollection, not ${describeGeoJSON(geom)}`);
   }
-  if (!Array.isArray(geom.coordinates)) throw new TypeError(`${what}: the ${geom.type}'s coordinates must be an array`);
-  return geom.type === 'Polygon' ? [geom.coordinates] : geom.coordinates;
 }
 
-/** The MultiPolygon coordinates of one operand, and the GeoJSON kind it came as. */
-function coordinatesOf(geom, operand) {
+/** Adds a Feature's polygons to `parts`. A feature whose geometry is null (an unlocated feature) adds none. */
+function addFeature(feature, where, parts, skip) {
+  if (feature.geometry !== null) addGeometry(feature.geometry, where, parts, skip, 0);
+}
+
+/**
+ * One operand read: `parts`, its polygons as MultiPolygon coordinates, one per geometry found (members of a
+ * collection are named in errors: `operand 1, feature 3`); the GeoJSON `kind` it came as, which the result answers
+ * in; and a Feature's properties.
+ */
+function readOperand(geom, o, skip) {
+  const where = `operand ${o}`;
   if (Array.isArray(geom)) {
-    return { coordinates: isPolygonCoordinates(geom) ? [geom] : geom, kind: 'coordinates' };
+    return { parts: [{ coordinates: isPolygonCoordinates(geom) ? [geom] : geom, where }], kind: 'coordinates' };
   }
-  if (geom && typeof geom === 'object') {
-    if (geom.type === 'Feature') {
-      const coordinates = geometryCoordinates(geom.geometry, `operand ${operand}: the feature's geometry`);
-      return { coordinates, kind: 'feature', properties: geom.properties ?? null };
-    }
-    if (!('type' in geom) && 'fillRule' in geom) {
-      throw new TypeError(`operand ${operand}: options such as {fillRule} go after the last operand`);
-    }
-    return { coordinates: geometryCoordinates(geom, `operand ${operand}`), kind: 'geometry' };
+  if (geom === null || typeof geom !== 'object') {
+    throw new TypeError(`${where}: expected GeoJSON Polygon or MultiPolygon coordinates, a geometry, a Feature or a FeatureCollection, not ${describe(geom)}`);
   }
-  throw new TypeError(`operand ${operand}: expected GeoJSON Polygon or MultiPolygon coordinates, geometry or feature, not ${describe(geom)}`);
+  const parts = [];
+  const type = geom.type;
+  if (type === 'Feature') {
+    addFeature(geom, where, parts, skip);
+    return { parts, kind: 'feature', properties: geom.properties ?? null };
+  }
+  if (type === 'FeatureCollection') {
+    const features = geom.features;
+    if (!Array.isArray(features)) throw new TypeError(`${where}: the FeatureCollection's features must be an array`);
+    for (let i = 0; i < features.length; i++) {
+      const feature = features[i];
+      if (feature?.type !== 'Feature') throw new TypeError(`${where}, feature ${i}: expected a Feature, not ${describeGeoJSON(feature)}`);
+      addFeature(feature, `${where}, feature ${i}`, parts, skip);
+    }
+    return { parts, kind: 'featureCollection' };
+  }
+  if (!('type' in geom) && ('fillRule' in geom || 'skipNonPolygonal' in geom)) {
+    throw new TypeError(`${where}: options such as {fillRule} go after the last operand`);
+  }
+  addGeometry(geom, where, parts, skip, 0);
+  return { parts, kind: 'geometry' };
 }
 
-/** One operand's MultiPolygon coordinates in the flat form, checking their shape on the way. (Plain loops: this
- * runs over every vertex of the input, and is most of the cost of a call outside the core.) */
-function toFlat(multiPolygon, o) {
-  if (!Array.isArray(multiPolygon)) throw new TypeError(`operand ${o}: coordinates must be an array of polygons`);
+/**
+ * One operand's parts in the flat form, checking their shape on the way, and where each part's polygons start
+ * (`labels`, to name the member in the core's errors). Plain loops: this runs over every vertex of the input, and
+ * is most of the cost of a call outside the core.
+ */
+function toFlat(parts) {
   let vertices = 0;
   let rings = 0;
-  for (let p = 0; p < multiPolygon.length; p++) {
-    const polygon = multiPolygon[p];
-    if (!Array.isArray(polygon)) throw new TypeError(`operand ${o}, polygon ${p}: must be an array of rings`);
-    for (let r = 0; r < polygon.length; r++) {
-      const ring = polygon[r];
-      if (!Array.isArray(ring)) throw new TypeError(`operand ${o}, polygon ${p}, ring ${r}: must be an array of positions`);
-      rings++;
-      vertices += ring.length;
-      if (vertices > MAX_VERTICES) {
-        throw new RangeError(`operand ${o}, polygon ${p}, ring ${r}: more than ${MAX_VERTICES} vertices, more than wasm memory holds`);
+  let polygons = 0;
+  for (const { coordinates, where } of parts) {
+    polygons += coordinates.length;
+    for (let p = 0; p < coordinates.length; p++) {
+      const polygon = coordinates[p];
+      if (!Array.isArray(polygon)) throw new TypeError(`${where}, polygon ${p}: must be an array of rings`);
+      for (let r = 0; r < polygon.length; r++) {
+        const ring = polygon[r];
+        if (!Array.isArray(ring)) throw new TypeError(`${where}, polygon ${p}, ring ${r}: must be an array of positions`);
+        rings++;
+        vertices += ring.length;
+        if (vertices > MAX_VERTICES) {
+          throw new RangeError(`${where}, polygon ${p}, ring ${r}: more than ${MAX_VERTICES} vertices, more than wasm memory holds`);
+        }
       }
     }
   }
   const coords = new Float64Array(2 * vertices);
   const ringOffsets = new Uint32Array(rings + 1);
-  const polygonOffsets = new Uint32Array(multiPolygon.length + 1);
+  const polygonOffsets = new Uint32Array(polygons + 1);
+  const labels = [];
   let v = 0;
   let r = 0;
-  for (let p = 0; p < multiPolygon.length; p++) {
-    const polygon = multiPolygon[p];
-    for (let ri = 0; ri < polygon.length; ri++) {
-      const ring = polygon[ri];
-      for (let vi = 0; vi < ring.length; vi++) {
-        const position = ring[vi];
-        if (!Array.isArray(position) || typeof position[0] !== 'number' || typeof position[1] !== 'number') {
-          throw new TypeError(`operand ${o}, polygon ${p}, ring ${ri}, vertex ${vi}: a position must be an array of two numbers`);
+  let p = 0;
+  for (const { coordinates, where } of parts) {
+    labels.push({ where, first: p, end: p + coordinates.length });
+    for (let pi = 0; pi < coordinates.length; pi++) {
+      const polygon = coordinates[pi];
+      for (let ri = 0; ri < polygon.length; ri++) {
+        const ring = polygon[ri];
+        for (let vi = 0; vi < ring.length; vi++) {
+          // Positions may carry more ordinates (altitude, measure): only x and y are read.
+          const position = ring[vi];
+          if (!Array.isArray(position) || typeof position[0] !== 'number' || typeof position[1] !== 'number') {
+            throw new TypeError(`${where}, polygon ${pi}, ring ${ri}, vertex ${vi}: a position must be an array of two (or more) numbers`);
+          }
+          coords[2 * v] = position[0];
+          coords[2 * v + 1] = position[1];
+          v++;
         }
-        coords[2 * v] = position[0];
-        coords[2 * v + 1] = position[1];
-        v++;
+        ringOffsets[++r] = v;
       }
-      ringOffsets[++r] = v;
+      polygonOffsets[++p] = r;
     }
-    polygonOffsets[p + 1] = r;
   }
-  return { coords, ringOffsets, polygonOffsets };
+  return { coords, ringOffsets, polygonOffsets, labels };
 }
 
 /** Operands in the flat form, concatenated, with the polygon offsets of each operand. */
@@ -165,12 +230,25 @@ function concatenate(operands) {
   return { coords, ringOffsets, polygonOffsets, operandOffsets };
 }
 
-/** Calls the wasm core; its errors (bad coordinates) become RangeErrors with the core's message. */
-function run(operation, fillRule, flat) {
+/**
+ * Calls the wasm core; its errors (bad coordinates) become RangeErrors with the core's message. The core numbers
+ * an operand's polygons straight through; `labels` (per operand, from toFlat) turn its "operand o, polygon p" (the
+ * Location format of crates/polysweep/src/error.rs) into the member and polygon of the caller's input, such as
+ * "operand 1, feature 3, polygon 0".
+ */
+function run(operation, fillRule, operands, labels) {
+  const flat = concatenate(operands);
   try {
     return overlay_flat(operation, fillRule, flat.coords, flat.ringOffsets, flat.polygonOffsets, flat.operandOffsets);
   } catch (error) {
-    throw new RangeError(error?.message ?? String(error));
+    let message = error?.message ?? String(error);
+    const at = /^operand (\d+), polygon (\d+), /.exec(message);
+    if (at && labels) {
+      const p = Number(at[2]);
+      const label = labels[Number(at[1])]?.find(({ first, end }) => first <= p && p < end);
+      if (label) message = `${label.where}, polygon ${p - label.first}, ${message.slice(at[0].length)}`;
+    }
+    throw new RangeError(message);
   }
 }
 
@@ -212,19 +290,30 @@ function toCoordinates({ coords, ringOffsets, polygonOffsets }) {
   return out;
 }
 
+/** The result's coordinates in the kind of the first operand (see pkg/README.md, "Input and output contract"). */
+function inKind(first, coordinates) {
+  const multiPolygon = { type: 'MultiPolygon', coordinates };
+  switch (first.kind) {
+    case 'feature':
+      return { type: 'Feature', properties: first.properties, geometry: multiPolygon };
+    case 'featureCollection':
+      // One feature holding the whole result: the features' areas are merged, so no one feature's properties fit.
+      return { type: 'FeatureCollection', features: [{ type: 'Feature', properties: null, geometry: multiPolygon }] };
+    case 'geometry':
+      return multiPolygon;
+    default:
+      return coordinates;
+  }
+}
+
 function operate(name, args) {
   const options = args.length > 1 && isOptions(args[args.length - 1]) ? args.pop() : undefined;
-  const fillRule = fillRuleOf(options);
+  const { fillRule, skipNonPolygonal } = optionsOf(options);
   if (args.length === 0) throw new TypeError(`${name}: at least one operand is required`);
-  const inputs = args.map(coordinatesOf);
-  const packed = run(OPERATIONS[name], fillRule, concatenate(inputs.map((input, o) => toFlat(input.coordinates, o))));
-  const coordinates = toCoordinates(unpack(packed));
-  const first = inputs[0];
-  if (first.kind === 'feature') {
-    return { type: 'Feature', properties: first.properties, geometry: { type: 'MultiPolygon', coordinates } };
-  }
-  if (first.kind === 'geometry') return { type: 'MultiPolygon', coordinates };
-  return coordinates;
+  const inputs = args.map((geom, o) => readOperand(geom, o, skipNonPolygonal));
+  const flats = inputs.map((input) => toFlat(input.parts));
+  const packed = run(OPERATIONS[name], fillRule, flats, flats.map((flat) => flat.labels));
+  return inKind(inputs[0], toCoordinates(unpack(packed)));
 }
 
 /** The union of all operands. */
@@ -255,7 +344,7 @@ export function overlayFlat(operation, operands, options) {
   if (!isKeyOf(OPERATIONS, operation)) {
     throw new TypeError(`operation must be one of ${Object.keys(OPERATIONS).join(', ')}, not ${describe(operation)}`);
   }
-  const fillRule = fillRuleOf(options);
+  const { fillRule } = optionsOf(options);
   if (!Array.isArray(operands)) {
     throw new TypeError(`operands must be an array of {coords, ringOffsets, polygonOffsets}, not ${describe(operands)}`);
   }
@@ -269,7 +358,7 @@ export function overlayFlat(operation, operands, options) {
     checkOffsets(o.ringOffsets, o.coords.length / 2, `operand ${i}: ringOffsets`, 'the vertex count (coords.length / 2)');
     checkOffsets(o.polygonOffsets, o.ringOffsets.length - 1, `operand ${i}: polygonOffsets`, 'the ring count (ringOffsets.length - 1)');
   });
-  const packed = run(OPERATIONS[operation], fillRule, concatenate(operands));
+  const packed = run(OPERATIONS[operation], fillRule, operands);
   const out = unpack(packed);
   return { coords: Float64Array.from(out.coords), ringOffsets: out.ringOffsets, polygonOffsets: out.polygonOffsets };
 }

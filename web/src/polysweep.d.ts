@@ -1,51 +1,83 @@
-/** A position: [x, y]. */
-export type Position = [number, number] | number[];
-/** A ring: positions, closed (first repeated last) or open. */
-export type Ring = Position[];
-/** GeoJSON Polygon coordinates: the exterior ring, then holes. */
-export type Polygon = Ring[];
-/** GeoJSON MultiPolygon coordinates. */
-export type MultiPolygon = Polygon[];
+// Types of the polysweep package. GeoJSON objects are typed with @types/geojson, the types map apps and turf already
+// use, so that an app's own Feature<Polygon, P>, FeatureCollection or coordinates pass without casts.
+import type {
+  Feature,
+  FeatureCollection,
+  Geometry,
+  GeometryCollection,
+  MultiPolygon,
+  Polygon,
+  Position,
+} from 'geojson';
 
-export interface PolygonGeometry {
-  type: 'Polygon';
-  coordinates: Polygon;
-}
-export interface MultiPolygonGeometry {
-  type: 'MultiPolygon';
-  coordinates: MultiPolygon;
-}
-export type Geometry = PolygonGeometry | MultiPolygonGeometry;
-export interface Feature<P = Record<string, unknown> | null> {
-  type: 'Feature';
-  geometry: Geometry;
-  properties: P;
-}
-export interface MultiPolygonFeature<P = Record<string, unknown> | null> {
-  type: 'Feature';
-  geometry: MultiPolygonGeometry;
-  properties: P;
-}
+/** GeoJSON Polygon coordinates: the exterior ring, then holes; rings closed or open, positions [x, y, ...]. */
+export type PolygonCoordinates = Position[][];
+/** GeoJSON MultiPolygon coordinates. */
+export type MultiPolygonCoordinates = Position[][][];
+
+/** The geometries whose polygons an operand is: Polygon, MultiPolygon, or a GeometryCollection of them. */
+export type PolygonalGeometry = Polygon | MultiPolygon | GeometryCollection;
+
+/**
+ * An operand: Polygon or MultiPolygon coordinates; a Polygon, MultiPolygon or GeometryCollection; a Feature of one
+ * (or with a null geometry, an empty operand); or a FeatureCollection, whose features' polygons together are one
+ * operand. A collection's members are checked as they are read: one that is not polygonal (a LineString, say) is
+ * an error unless `{ skipNonPolygonal: true }` is passed, and with that option any geometry or Feature is accepted.
+ */
+export type Operand =
+  | PolygonCoordinates
+  | MultiPolygonCoordinates
+  | PolygonalGeometry
+  | Feature<PolygonalGeometry | null, any>
+  | FeatureCollection<Geometry | null, any>;
+
+/** Any GeoJSON geometry, Feature or FeatureCollection, or coordinates: what `{ skipNonPolygonal: true }` accepts. */
+export type AnyOperand = Operand | Geometry | Feature<Geometry | null, any>;
+
+/**
+ * How an operand's rings define its interior: 'evenodd' (the default: inside an odd number of rings), 'nonzero'
+ * (winding number not 0), 'positive' (winding number above 0: counter-clockwise rings fill, clockwise ones cut),
+ * 'negative' (below 0), as in Clipper2; or 'structure', polygon-clipping's reading of GeoJSON: each ring's own
+ * region (orientation does not matter), a polygon its exterior less its holes, an operand the union of its
+ * polygons (about three times the work of the other rules on any input).
+ */
+export type FillRule = 'evenodd' | 'nonzero' | 'positive' | 'negative' | 'structure';
 
 export interface Options {
-  /** How an operand's rings define its interior: 'evenodd' (default) or 'nonzero'. */
-  fillRule?: 'evenodd' | 'nonzero';
+  /** How an operand's rings define its interior; 'evenodd' by default. */
+  fillRule?: FillRule;
+  /** Read Points, LineStrings and their Multi forms as nothing instead of throwing. */
+  skipNonPolygonal?: boolean;
 }
 
-/** An operand: GeoJSON coordinates, a Polygon or MultiPolygon geometry, or a Feature of one. */
-export type Geom = Polygon | MultiPolygon | Geometry | Feature;
+/**
+ * The result, in the kind of the first operand: a FeatureCollection gives a FeatureCollection of one Feature
+ * (properties null); a Feature a Feature with its properties; any geometry a MultiPolygon; coordinates
+ * MultiPolygon coordinates.
+ */
+export type Result<G> =
+  G extends FeatureCollection<any, any>
+    ? FeatureCollection<MultiPolygon, null>
+    : G extends Feature<any, infer P>
+      ? Feature<MultiPolygon, P>
+      : G extends Geometry
+        ? MultiPolygon
+        : MultiPolygonCoordinates;
 
-/** Results come in the kind of the first operand: coordinates, a MultiPolygon geometry, or a Feature with its properties. */
-export type Result<G> = G extends Feature<infer P>
-  ? MultiPolygonFeature<P>
-  : G extends Geometry
-    ? MultiPolygonGeometry
-    : MultiPolygon;
+/** The call of each operation: one or more operands, then options (only last, as the function reads them). */
+export interface Operation {
+  <G extends Operand>(geom: G, ...more: Operand[] | [...Operand[], Options]): Result<G>;
+  <G extends AnyOperand>(geom: G, ...more: [...AnyOperand[], Options & { skipNonPolygonal: true }]): Result<G>;
+}
 
-export function union<G extends Geom>(geom: G, ...geoms: (Geom | Options)[]): Result<G>;
-export function intersection<G extends Geom>(geom: G, ...geoms: (Geom | Options)[]): Result<G>;
-export function difference<G extends Geom>(subject: G, ...clips: (Geom | Options)[]): Result<G>;
-export function xor<G extends Geom>(geom: G, ...geoms: (Geom | Options)[]): Result<G>;
+/** The union of all operands. */
+export declare const union: Operation;
+/** The intersection of all operands. */
+export declare const intersection: Operation;
+/** The first operand minus every other. */
+export declare const difference: Operation;
+/** The points inside an odd number of operands. */
+export declare const xor: Operation;
 
 /** The flat (GeoArrow / earcut) layout: x, y pairs; each ring's vertex offsets; each polygon's ring offsets. */
 export interface FlatMultiPolygon {
@@ -57,5 +89,5 @@ export interface FlatMultiPolygon {
 export function overlayFlat(
   operation: 'intersection' | 'union' | 'difference' | 'xor',
   operands: FlatMultiPolygon[],
-  options?: Options,
+  options?: Pick<Options, 'fillRule'>,
 ): FlatMultiPolygon;

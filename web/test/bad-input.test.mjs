@@ -4,24 +4,18 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { union, intersection, difference, xor, overlayFlat } from '../../pkg/polysweep.node.js';
+import { area } from './normalise.mjs';
 
 const OPERATIONS = { union, intersection, difference, xor };
 const square = (x, y, s = 2) => [[[x, y], [x + s, y], [x + s, y + s], [x, y + s], [x, y]]];
 const A = square(0, 0);
-const at = (o, p, r, v) => new RegExp(`operand ${o}, polygon ${p}, ring ${r}, vertex ${v}\\b`);
+// `member` names the feature or geometry of a collection operand the polygon is in, such as ', feature 1'.
+const at = (o, p, r, v, member = '') => new RegExp(`operand ${o}${member}, polygon ${p}, ring ${r}, vertex ${v}\\b`);
 // Messages V8 or wasm make up themselves: they say nothing about which input was wrong.
 const ENGINE_MESSAGE =
   /unreachable|out of bounds|call stack|is not a function|is not iterable|Cannot read propert|Cannot convert|Invalid typed array length|serialize a BigInt/;
 
 // Shoelace, signed: exteriors come counter-clockwise and holes clockwise, so the sum is the area.
-function area(multiPolygon) {
-  let twice = 0;
-  for (const ring of multiPolygon.flat(1)) {
-    for (let k = 0; k + 1 < ring.length; k++) twice += ring[k][0] * ring[k + 1][1] - ring[k + 1][0] * ring[k][1];
-  }
-  return twice / 2;
-}
-
 function assertMultiPolygon(mp) {
   assert.ok(Array.isArray(mp), 'coordinates are an array of polygons');
   for (const polygon of mp) {
@@ -48,10 +42,15 @@ function nestedOf({ coords, ringOffsets, polygonOffsets }) {
   });
 }
 
-/** The MultiPolygon coordinates of any result: coordinates, a MultiPolygon geometry, a Feature, or the flat form. */
+/** The MultiPolygon coordinates of any result: coordinates, a MultiPolygon geometry, a Feature, a FeatureCollection
+ * of one Feature, or the flat form. */
 function coordinatesOf(result) {
   if (Array.isArray(result)) return result;
   if (result?.coords) return nestedOf(result);
+  if (result?.type === 'FeatureCollection') {
+    assert.equal(result.features.length, 1, 'a FeatureCollection result holds one feature');
+    result = result.features[0];
+  }
   const geometry = result?.type === 'Feature' ? result.geometry : result;
   assert.equal(geometry?.type, 'MultiPolygon', 'a result is coordinates, a geometry or a feature');
   return geometry.coordinates;
@@ -105,6 +104,7 @@ const ODD_VALID_COORDINATES = [-0, 1e60, -1e60, 2 ** 200, 2 ** -200, -(2 ** -200
 // Positions that are not arrays of two numbers (and not read as a deeper level of nesting either).
 const BAD_POSITIONS = [null, undefined, 0, 'xy', [], [1], [, 1], [1, ,], ['1', '2'], new Float64Array([1, 2]),
   { 0: 1, 1: 2, length: 2 }, Symbol('p'), {}, [1n, 2n]];
+const GOOD_FILL_RULES = ['evenodd', 'nonzero', 'positive', 'negative', 'structure'];
 const BAD_FILL_RULES = ['winding', 'EvenOdd', '', 'toString', 'constructor', '__proto__', 'hasOwnProperty', 0, 1, true,
   Symbol('rule'), ['nonzero'], { toString: () => 'nonzero' }, 1n];
 const BAD_OPERATION_NAMES = ['Union', '', 'toString', 'constructor', '__proto__', 'valueOf', 0, 1, null, undefined,
@@ -116,6 +116,11 @@ const throwingArray = () => Object.defineProperty([], 0, { get() { throw new Err
 const deep = (n) => { let a = [[0, 0]]; for (let i = 0; i < n; i++) a = [a]; return a; };
 const hugeSparseRing = () => { const ring = []; ring.length = 2 ** 32 - 1; return ring; };
 const selfFeature = () => { const f = { type: 'Feature', properties: null }; f.geometry = f; return f; };
+const selfCollection = () => { const c = { type: 'GeometryCollection' }; c.geometries = [c]; return c; };
+const nestedCollections = (n) => { let g = { type: 'Polygon', coordinates: A }; for (let i = 0; i < n; i++) g = { type: 'GeometryCollection', geometries: [g] }; return g; };
+const feature = (geometry) => ({ type: 'Feature', properties: null, geometry });
+const featureCollection = (...geometries) => ({ type: 'FeatureCollection', features: geometries.map(feature) });
+const lineString = { type: 'LineString', coordinates: [[0, 0], [1, 1]] };
 const flatSquare = (x, y) => flatOf([square(x, y)]);
 
 const HAND_CASES = [
@@ -148,6 +153,20 @@ const HAND_CASES = [
   ['rings of 0, 1, 2 positions', () => union([[]], [[[0, 0]]], [[[0, 0], [1, 1]]]), 0],
   ['empty at every level', () => xor([], [[]], [[[]]], [[], [[]]]), 0],
   ['Polygon whose first ring is empty', () => union([[], [[5, 5], [7, 5], [7, 7], [5, 7]]]), 4],
+  ['position with two extra ordinates', () => union(A, withVertex([3, 3, 7, 1e300])), 9],
+  // Collections, null geometries and skipped members (A is 2 x 2 at 0,0; square(1, 1) 2 x 2 at 1,1: 7 together).
+  ['empty GeometryCollection', () => union(A, { type: 'GeometryCollection', geometries: [] }, square(1, 1)), 7],
+  ['empty FeatureCollection', () => union(A, { type: 'FeatureCollection', features: [] }, square(1, 1)), 7],
+  ['FeatureCollection of A', () => union(A, featureCollection({ type: 'Polygon', coordinates: A }), square(1, 1)), 7],
+  ['Feature with null geometry', () => union(A, feature(null), square(1, 1)), 7],
+  ['Feature with null geometry alone', () => union(feature(null)), 0],
+  ['null geometries in a FeatureCollection', () => union(featureCollection(null, { type: 'Polygon', coordinates: A }, null)), 4],
+  ['GeometryCollections 32 deep', () => union(nestedCollections(32)), 4],
+  ['LineString skipped', () => union(A, lineString, { skipNonPolygonal: true }), 4],
+  ['Point member skipped', () => union(featureCollection({ type: 'Point', coordinates: [9, 9] }, { type: 'Polygon', coordinates: A }), { skipNonPolygonal: true }), 4],
+  ['skipNonPolygonal null means the default', () => union(A, { skipNonPolygonal: null }), 4],
+  ['positive fill rule', () => union(A, square(1, 1), { fillRule: 'positive' }), 7],
+  ['negative fill rule', () => union(A, square(1, 1), { fillRule: 'negative' }), 0],
   ['fillRule null means the default', () => union(A, { fillRule: null }), 4],
   ['flat with no operands', () => overlayFlat('union', []), 0],
   // Wrong as operand 1, whatever the kind.
@@ -158,12 +177,30 @@ const HAND_CASES = [
     ['MultiPolygon coordinates as a Polygon', { type: 'Polygon', coordinates: [A] }],
     ['Polygon coordinates as a MultiPolygon', { type: 'MultiPolygon', coordinates: A }],
     ['lower-case type', { type: 'polygon', coordinates: A }], ['Point', { type: 'Point', coordinates: [0, 0] }],
-    ['type that is a BigInt', { type: 1n, coordinates: A }], ['GeometryCollection', { type: 'GeometryCollection', geometries: [] }],
-    ['FeatureCollection', { type: 'FeatureCollection', features: [{ type: 'Feature', geometry: { type: 'Polygon', coordinates: A } }] }],
-    ['Feature with null geometry', { type: 'Feature', geometry: null, properties: {} }],
+    ['type that is a BigInt', { type: 1n, coordinates: A }],
     ['Feature without geometry', { type: 'Feature', properties: {} }], ['Feature of itself', selfFeature()],
+    ['LineString', lineString], ['Feature of a LineString', feature(lineString)],
+    ['GeometryCollection without geometries', { type: 'GeometryCollection' }], ['FeatureCollection with null features', { type: 'FeatureCollection', features: null }],
+    ['GeometryCollection holding itself', selfCollection()], ['GeometryCollections 33 deep', nestedCollections(33)],
+    ['FeatureCollection of a geometry', { type: 'FeatureCollection', features: [{ type: 'Polygon', coordinates: A }] }],
+    ['FeatureCollection of a FeatureCollection', { type: 'FeatureCollection', features: [featureCollection()] }],
+    ['GeometryCollection of a Feature', { type: 'GeometryCollection', geometries: [feature(null)] }],
+    ['GeometryCollection with a null member', { type: 'GeometryCollection', geometries: [null] }],
   ].map(([name, operand]) => [name, () => union(A, operand, square(1, 1)), /operand 1/]),
   ['Feature with a bad vertex', () => union(A, A, { type: 'Feature', geometry: { type: 'MultiPolygon', coordinates: [A, withVertex([NaN, 0])] } }), at(2, 1, 0, 2)],
+  // In a collection, the member is named and the polygon counted within it, for the core's errors (NaN, range)
+  // and the package's own (shape) alike.
+  ...[[NaN, 0], [1e300, 0], [0, 'x'], [0]].flatMap((bad, i) => [
+    [`bad vertex ${i} in feature 2`, () => union(A, featureCollection(null, { type: 'Polygon', coordinates: A }, { type: 'MultiPolygon', coordinates: [A, withVertex(bad)] })), at(1, 1, 0, 2, ', feature 2')],
+    [`bad vertex ${i} in a nested geometry`, () => xor(A, A, { type: 'GeometryCollection', geometries: [{ type: 'Polygon', coordinates: A }, { type: 'GeometryCollection', geometries: [{ type: 'Polygon', coordinates: withVertex(bad) }] }] }), at(2, 0, 0, 2, ', geometry 1, geometry 0')],
+    [`bad vertex ${i} in a feature's GeometryCollection`, () => union(featureCollection({ type: 'GeometryCollection', geometries: [{ type: 'MultiPolygon', coordinates: [A, A, withVertex(bad)] }] })), at(0, 2, 0, 2, ', feature 0, geometry 0')],
+  ]),
+  ['LineString in a FeatureCollection', () => union(A, featureCollection(null, null, null, lineString)), /^operand 1, feature 3: a LineString is not a polygon/],
+  ['Point in a GeometryCollection', () => union(A, { type: 'GeometryCollection', geometries: [{ type: 'Point', coordinates: [0, 0] }] }), /^operand 1, geometry 0: a Point is not a polygon/],
+  ['bad member type in a collection', () => union(A, featureCollection({ type: 'Polygon', coordinates: A }, { type: 'Circle' })), /^operand 1, feature 1: expected a Polygon/],
+  ['a junk member is not skipped', () => union(A, featureCollection({ type: 'polygon', coordinates: A }), { skipNonPolygonal: true }), /^operand 1, feature 0: expected a Polygon/],
+  ...[0, 1, 'yes', {}, 1n].map((value, i) => [`skipNonPolygonal ${i}`, () => union(A, lineString, { skipNonPolygonal: value }), /skipNonPolygonal/]),
+  ['skipNonPolygonal between operands', () => union(A, { skipNonPolygonal: true }, A), /operand 1: options/],
   ['getter that throws, as a ring', () => union(A, [throwingArray()]), /getter threw/],
   ['getter that throws, as a position', () => union(A, [[[0, 0], [1, 0], throwingArray()]]), /getter threw/],
   ['geometry type getter that throws', () => union(A, { get type() { throw new Error('getter threw'); } }), /getter threw/],
@@ -210,20 +247,31 @@ const pick = (list) => list[below(list.length)];
 const randomMultiPolygon = () => Array.from({ length: 1 + below(3) }, () =>
   Array.from({ length: 1 + below(2) }, () => Array.from({ length: 3 + below(4) }, () => [below(9) - 4, below(9) - 4])));
 
-/** MultiPolygon coordinates as Polygon coordinates (when there is one polygon), a geometry or a feature. */
-function inRandomForm(mp) {
-  const form = pick(mp.length === 1 ? ['polygon', 'multipolygon', 'geometry', 'feature'] : ['multipolygon', 'geometry', 'feature']);
+const FORMS = ['polygon', 'multipolygon', 'geometry', 'feature', 'featureCollection', 'geometryCollection'];
+/** A form to pass MultiPolygon coordinates in (Polygon coordinates only when there is one polygon). */
+const randomForm = (mp) => pick(mp.length === 1 ? FORMS : FORMS.slice(1));
+// What errors call the collection member the polygons are put in by inForm.
+const MEMBER = { featureCollection: ', feature 1', geometryCollection: ', geometry 1' };
+
+/** MultiPolygon coordinates in `form`; a collection holds them as its second member, after an empty one. */
+function inForm(mp, form) {
   if (form === 'polygon' || form === 'multipolygon') return form === 'polygon' ? mp[0] : mp;
   const geometry = { type: 'MultiPolygon', coordinates: mp };
-  return form === 'geometry' ? geometry : { type: 'Feature', properties: { form }, geometry };
+  if (form === 'geometry') return geometry;
+  if (form === 'feature') return { type: 'Feature', properties: { form }, geometry };
+  if (form === 'featureCollection') return { type: 'FeatureCollection', features: [{ type: 'Feature', properties: null, geometry: null }, { type: 'Feature', properties: null, geometry }] };
+  return { type: 'GeometryCollection', geometries: [{ type: 'GeometryCollection', geometries: [] }, geometry] };
 }
 
-/** Puts one bad (or oddly valid) thing somewhere in operand `o`'s polygons `mp`, and says what must happen. */
-function mutate(mp, o) {
+/**
+ * Puts one bad (or oddly valid) thing somewhere in operand `o`'s polygons `mp`, and says what must happen;
+ * `member` names the collection member they are in, if any.
+ */
+function mutate(mp, o, member) {
   const p = below(mp.length), r = below(mp[p].length), v = below(mp[p][r].length);
   switch (below(5)) {
-    case 0: mp[p][r][v] = [...mp[p][r][v]]; mp[p][r][v][below(2)] = pick(BAD_COORDINATES); return at(o, p, r, v);
-    case 1: mp[p][r][v] = pick(BAD_POSITIONS); return at(o, p, r, v);
+    case 0: mp[p][r][v] = [...mp[p][r][v]]; mp[p][r][v][below(2)] = pick(BAD_COORDINATES); return at(o, p, r, v, member);
+    case 1: mp[p][r][v] = pick(BAD_POSITIONS); return at(o, p, r, v, member);
     case 2: mp[p][r][v] = mp[p][r][v].map((c) => (random() < 0.5 ? c : pick(ODD_VALID_COORDINATES))); return 'returns';
     case 3: if (random() < 0.5) mp[p][r] = pick(JUNK); else delete mp[p][r]; return { ifThrows: new RegExp(`operand ${o}\\b`) };
     default: mp[p] = random() < 0.5 ? pick(JUNK) : [mp[p]]; return { ifThrows: new RegExp(`operand ${o}\\b`) };
@@ -235,12 +283,13 @@ test('3,000 generated nested calls, one bad thing each', () => {
   for (let i = 0; i < 3000; i++) {
     const polygons = Array.from({ length: 1 + below(4) }, randomMultiPolygon);
     const bad = below(polygons.length);
-    let expect = mutate(polygons[bad], bad);
-    const operands = polygons.map(inRandomForm);
+    const forms = polygons.map(randomForm);
+    let expect = mutate(polygons[bad], bad, MEMBER[forms[bad]] ?? '');
+    const operands = polygons.map((mp, o) => inForm(mp, forms[o]));
     if (random() < 0.2) {
-      const rule = random() < 0.5 ? pick(['evenodd', 'nonzero', undefined]) : pick(BAD_FILL_RULES);
+      const rule = random() < 0.5 ? pick([...GOOD_FILL_RULES, undefined]) : pick(BAD_FILL_RULES);
       operands.push({ fillRule: rule });
-      if (!['evenodd', 'nonzero', undefined].includes(rule)) expect = /fillRule/;
+      if (![...GOOD_FILL_RULES, undefined].includes(rule)) expect = /fillRule/;
     }
     const name = pick(Object.keys(OPERATIONS));
     threw += check(`generated ${i}: ${name}`, () => OPERATIONS[name](...operands), expect);
@@ -278,6 +327,6 @@ test('1,000 generated flat calls, one bad thing each', () => {
       case 4: operands[o][pick(['coords', 'ringOffsets', 'polygonOffsets'])] = pick([[], new Int32Array(2), new Float32Array(2), null, {}]); break;
       default: operands[o] = pick(JUNK);
     }
-    check(`flat ${i}`, () => overlayFlat(pick(Object.keys(OPERATIONS)), operands, pick([undefined, { fillRule: 'nonzero' }])), expect);
+    check(`flat ${i}`, () => overlayFlat(pick(Object.keys(OPERATIONS)), operands, pick([undefined, { fillRule: pick(GOOD_FILL_RULES) }])), expect);
   }
 });

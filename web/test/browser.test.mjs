@@ -11,9 +11,9 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { serve } from '../serve.mjs';
-import { launchChromium } from './chromium.mjs';
+import { launchChromium, runPage as openPage } from './chromium.mjs';
 import { build, createLogger } from 'vite';
-import { normalise } from './normalise.mjs';
+import { normalise, area } from './normalise.mjs';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
 const fixturesDir = path.join(root, 'tests', 'fixtures');
@@ -58,45 +58,8 @@ after(async () => {
   for (const dir of temporary) rmSync(dir, { recursive: true, force: true });
 });
 
-/**
- * Opens `url` in a new page and waits until it sets `window.results` or `window.failure`, or until it logs a console
- * error, throws an uncaught error or fails a request. Returns the page's outcome with everything it complained about
- * and every URL it requested.
- */
-async function runPage(url) {
-  const page = await context.newPage();
-  const problems = [];
-  const requests = [];
-  let complained;
-  const complaint = new Promise((resolve) => {
-    complained = resolve;
-  });
-  const problem = (text) => {
-    problems.push(text);
-    complained();
-  };
-  const onConsole = (where) => (message) => {
-    if (message.type() === 'error') problem(`${where} console.error: ${message.text()}`);
-  };
-  page.on('console', onConsole('page'));
-  page.on('pageerror', (error) => problem(`page error: ${error.stack ?? error.message}`));
-  page.on('worker', (worker) => worker.on('console', onConsole('worker')));
-  page.on('request', (request) => requests.push(request.url()));
-  page.on('requestfailed', (request) => problem(`request failed: ${request.url()}: ${request.failure()?.errorText}`));
-  page.on('response', (response) => {
-    if (response.status() >= 400) problem(`HTTP ${response.status()}: ${response.url()}`);
-  });
-  try {
-    await page.goto(url);
-    const settled = page
-      .waitForFunction(() => window.results !== undefined || window.failure !== undefined, null, { timeout: PAGE_TIMEOUT })
-      .then(() => page.evaluate(() => ({ results: window.results, failure: window.failure })));
-    const outcome = await Promise.race([settled, complaint.then(() => ({}))]);
-    return { ...outcome, problems, requests };
-  } finally {
-    await page.close();
-  }
-}
+/** [`openPage`] in this file's browser, with its timeout. */
+const runPage = (url) => openPage(context, url, PAGE_TIMEOUT);
 
 /** Fails with everything the page reported when it did not finish cleanly. */
 function assertClean({ failure, problems }) {
@@ -119,17 +82,6 @@ async function checkFixtureResults(t, results) {
       }
     });
   }
-}
-
-/** Signed shoelace area of MultiPolygon coordinates: positive for counter-clockwise exteriors and clockwise holes. */
-function area(multiPolygon) {
-  let twice = 0;
-  for (const polygon of multiPolygon) {
-    for (const ring of polygon) {
-      for (let k = 0; k + 1 < ring.length; k++) twice += ring[k][0] * ring[k + 1][1] - ring[k + 1][0] * ring[k][1];
-    }
-  }
-  return twice / 2;
 }
 
 test('plain ES module: every fixture in Chromium', { timeout: TIMEOUT }, async (t) => {

@@ -1,5 +1,5 @@
 // Headless Debian Chromium (/usr/bin/chromium) through playwright-core, with a throw-away profile: the one way the
-// browser tests start a browser. No network besides 127.0.0.1 is needed.
+// browser tests start a browser and open a test page. No network besides 127.0.0.1 is needed.
 import { mkdtempSync } from 'node:fs';
 import { rm } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
@@ -20,4 +20,44 @@ export async function launchChromium() {
     await rm(profile, { recursive: true, force: true, maxRetries: 20, retryDelay: 200 });
   };
   return { context, close };
+}
+
+/**
+ * Opens `url` in a new page of `context` and waits (at most `timeout` ms) until it sets `window.results` or
+ * `window.failure`, or until it logs a console error, throws an uncaught error or fails a request. Returns the
+ * page's outcome with everything it complained about and every URL it requested.
+ */
+export async function runPage(context, url, timeout) {
+  const page = await context.newPage();
+  const problems = [];
+  const requests = [];
+  let complained;
+  const complaint = new Promise((resolve) => {
+    complained = resolve;
+  });
+  const problem = (text) => {
+    problems.push(text);
+    complained();
+  };
+  const onConsole = (where) => (message) => {
+    if (message.type() === 'error') problem(`${where} console.error: ${message.text()}`);
+  };
+  page.on('console', onConsole('page'));
+  page.on('pageerror', (error) => problem(`page error: ${error.stack ?? error.message}`));
+  page.on('worker', (worker) => worker.on('console', onConsole('worker')));
+  page.on('request', (request) => requests.push(request.url()));
+  page.on('requestfailed', (request) => problem(`request failed: ${request.url()}: ${request.failure()?.errorText}`));
+  page.on('response', (response) => {
+    if (response.status() >= 400) problem(`HTTP ${response.status()}: ${response.url()}`);
+  });
+  try {
+    await page.goto(url);
+    const settled = page
+      .waitForFunction(() => window.results !== undefined || window.failure !== undefined, null, { timeout })
+      .then(() => page.evaluate(() => ({ results: window.results, failure: window.failure })));
+    const outcome = await Promise.race([settled, complaint.then(() => ({}))]);
+    return { ...outcome, problems, requests };
+  } finally {
+    await page.close();
+  }
 }

@@ -49,3 +49,12 @@ export function normalise(multiPolygon) {
     })
     .sort(compareArrays);
 }
+
+/** Signed shoelace area of MultiPolygon coordinates: positive for counter-clockwise exteriors and clockwise holes. */
+export function area(multiPolygon) {
+  let twice = 0;
+  for (const ring of multiPolygon.flat(1)) {
+    for (let k = 0; k + 1 < ring.length; k++) twice += ring[k][0] * ring[k + 1][1] - ring[k + 1][0] * ring[k][1];
+  }
+  return twice / 2;
+}

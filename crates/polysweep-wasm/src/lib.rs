@@ -73,7 +73,7 @@ fn pack(result: &MultiPolygon) -> Vec<f64> {
 }
 
 /// `operation` (0 intersection, 1 union, 2 difference, 3 xor) over the flat operands, with `fill_rule` (0
-/// even-odd, 1 non-zero). Two operands take the paper's binary sweep; any other number the n-ary one.
+/// even-odd, 1 non-zero, 2 positive, 3 negative, 4 structure). Two operands take the paper's binary sweep; any other number the n-ary one.
 #[wasm_bindgen]
 pub fn overlay_flat(
     operation: u8,
@@ -99,9 +99,10 @@ pub fn overlay_flat(
         1 => FillRule::NonZero,
         2 => FillRule::Positive,
         3 => FillRule::Negative,
+        4 => FillRule::Structure,
         _ => {
             return Err(JsError::new(
-                "fill rule must be 0 (even-odd) or 1 (non-zero)",
+                "fill rule must be 0 (even-odd), 1 (non-zero), 2 (positive), 3 (negative) or 4 (structure)",
             ))
         }
     };

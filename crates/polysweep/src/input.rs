@@ -167,23 +167,28 @@ pub(crate) fn add_edges(
     edges.reserve(polygons.vertex_count()); // at most one edge per vertex
     let kept = polygons.0.iter().enumerate().filter(|&(p, _)| keep(p));
     for ring in kept.flat_map(|(_, p)| p.rings()) {
-        let n = open_len(ring);
-        for i in 0..n {
-            let (from, to) = (ring[i], ring[next_around(i, n)]);
-            if from == to {
-                continue;
-            }
-            let (from, to) = ([from.x, from.y], [to.x, to.y]);
-            // Sweep order: by x, then y (§7.1: a vertical edge's lower end is its left end).
-            let forward = (from[0], from[1]) < (to[0], to[1]);
-            let (a, b) = if forward { (from, to) } else { (to, from) };
-            edges.push(InputEdge {
-                line: Line { a, b },
-                operand,
-                // Crossing an edge upwards enters a counter-clockwise ring when the edge runs left to right.
-                winding: if forward { 1 } else { -1 },
-            });
+        add_ring_edges(edges, ring, operand);
+    }
+}
+
+/// Appends the edges of one ring (open or closed) for `operand`.
+pub(crate) fn add_ring_edges(edges: &mut Vec<InputEdge>, ring: &[Point], operand: Operand) {
+    let n = open_len(ring);
+    for i in 0..n {
+        let (from, to) = (ring[i], ring[next_around(i, n)]);
+        if from == to {
+            continue;
         }
+        let (from, to) = ([from.x, from.y], [to.x, to.y]);
+        // Sweep order: by x, then y (§7.1: a vertical edge's lower end is its left end).
+        let forward = (from[0], from[1]) < (to[0], to[1]);
+        let (a, b) = if forward { (from, to) } else { (to, from) };
+        edges.push(InputEdge {
+            line: Line { a, b },
+            operand,
+            // Crossing an edge upwards enters a counter-clockwise ring when the edge runs left to right.
+            winding: if forward { 1 } else { -1 },
+        });
     }
 }
 

@@ -61,7 +61,33 @@ fn inside(m: &MultiPolygon, p: Point, fill_rule: FillRule) -> bool {
         FillRule::NonZero => winding_number(m, p) != 0,
         FillRule::Positive => winding_number(m, p) > 0,
         FillRule::Negative => winding_number(m, p) < 0,
+        FillRule::Structure => inside_by_structure(m, p),
     }
+}
+
+/// The structural reading: some polygon's exterior alone winds around `p`, and none of its holes alone does.
+fn inside_by_structure(m: &MultiPolygon, p: Point) -> bool {
+    let alone = |ring: &Vec<Point>| {
+        winding_number(&MultiPolygon(vec![Polygon::new(ring.clone(), vec![])]), p) != 0
+    };
+    (m.0.iter()).any(|polygon| alone(&polygon.exterior) && !polygon.holes.iter().any(alone))
+}
+
+/// 1 to 3 polygons of 0 to 2 holes, every ring of 3 to 6 vertices on a small integer grid: holes anywhere (across,
+/// outside or around their exterior, over each other), rings crossing themselves and each other.
+fn grid_polygons(size: i32) -> impl Strategy<Value = MultiPolygon> {
+    let ring = move || prop::collection::vec((0..=size, 0..=size), 3..=6);
+    let polygon = (ring(), prop::collection::vec(ring(), 0..=2));
+    prop::collection::vec(polygon, 1..=3).prop_map(|polygons| {
+        MultiPolygon(
+            (polygons.into_iter())
+                .map(|(exterior, holes)| {
+                    let holes = holes.into_iter().map(|h| self::ring(h, 1.0, 0.0)).collect();
+                    Polygon::new(self::ring(exterior, 1.0, 0.0), holes)
+                })
+                .collect(),
+        )
+    })
 }
 
 /// Every fill rule.
@@ -153,6 +179,11 @@ proptest! {
     fn membership_on_a_small_grid(a in grid_operand(6), b in grid_operand(6)) {
         let (a, b) = (operand(a, 1.0, 0.0), operand(b, 1.0, 0.0));
         check_membership(&a, &b, &samples(6, 1.0, 0.0), FillRule::EvenOdd)?;
+    }
+
+    #[test]
+    fn membership_by_structure(a in grid_polygons(5), b in grid_polygons(5)) {
+        check_membership(&a, &b, &samples(5, 1.0, 0.0), FillRule::Structure)?;
     }
 
     #[test]

@@ -37,6 +37,7 @@ impl Playground {
             ui.radio_value(&mut self.fill_rule, FillRule::NonZero, "non-zero");
             ui.radio_value(&mut self.fill_rule, FillRule::Positive, "positive");
             ui.radio_value(&mut self.fill_rule, FillRule::Negative, "negative");
+            ui.radio_value(&mut self.fill_rule, FillRule::Structure, "structure");
         });
         ui.separator();
 
