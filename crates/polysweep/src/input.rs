@@ -12,6 +12,9 @@ use crate::geometry::{
 /// of each of its polygons (of all its rings: a hole may reach outside its shell), made on the same pass. The pass
 /// only notes whether a polygon has a bad coordinate, without a branch per coordinate; such a polygon is read again
 /// to name the first one.
+///
+/// (One pass for both, as every operation makes it over all its input: [`boxes`] alone is for polygons the
+/// pipeline made itself.)
 pub(crate) fn check(index: usize, operand: &MultiPolygon) -> Result<Vec<Bounds>, Error> {
     let mut boxes = Vec::with_capacity(operand.0.len());
     for (polygon, p) in operand.0.iter().enumerate() {
@@ -32,6 +35,17 @@ pub(crate) fn check(index: usize, operand: &MultiPolygon) -> Result<Vec<Bounds>,
         boxes.push(bounds);
     }
     Ok(boxes)
+}
+
+/// The box of each polygon of `operand`.
+pub(crate) fn boxes(operand: &MultiPolygon) -> Vec<Bounds> {
+    (operand.0.iter())
+        .map(|p| {
+            p.rings()
+                .flatten()
+                .fold(Bounds::EMPTY, |b, q| b.around(&Bounds::at(q)))
+        })
+        .collect()
 }
 
 /// Is `value` a coordinate the exact predicates' proofs cover: finite, and 0 or of a magnitude within

@@ -26,18 +26,33 @@ pub(crate) fn overlay_pair(
     options: &Options,
 ) -> Result<(MultiPolygon, Stats), Error> {
     let boxes = [input::check(0, subject)?, input::check(1, clipping)?];
-    let bounds = boxes.each_ref().map(|b| Bounds::around_all(b));
-    let magnitude = bounds[0].around(&bounds[1]).magnitude();
     if options.fill_rule == FillRule::Structure {
-        // Each operand read by its structure is a valid polygon set, which the even-odd rule reads as it is.
+        let [subject_box, clipping_box] = boxes.each_ref().map(|b| Bounds::around_all(b));
+        let magnitude = subject_box.around(&clipping_box).magnitude();
+        // Each operand read by its structure is a valid polygon set, which the even-odd rule reads as it is. (Not
+        // checked again: its vertices are the input's and crossings between them, which the sweep takes as they
+        // come, as it does in `overlay_many`.)
         let [subject, clipping] =
             workspace::with(options.shortcuts.keep_working_memory, |workspace| {
                 let mut read = |operand| read_by_structure(operand, magnitude, options, workspace);
                 Ok::<_, Error>([read(subject)?, read(clipping)?])
             })?;
+        let boxes = [input::boxes(&subject), input::boxes(&clipping)];
         let options = options.with_fill_rule(FillRule::EvenOdd);
-        return overlay_pair(operation, &subject, &clipping, &options);
+        return overlay_checked(operation, [&subject, &clipping], boxes, &options);
     }
+    overlay_checked(operation, [subject, clipping], boxes, options)
+}
+
+/// [`overlay_pair`] on operands already checked, whose polygons' boxes are `boxes`.
+fn overlay_checked(
+    operation: Operation,
+    [subject, clipping]: [&MultiPolygon; 2],
+    boxes: [Vec<Bounds>; 2],
+    options: &Options,
+) -> Result<(MultiPolygon, Stats), Error> {
+    let bounds = boxes.each_ref().map(|b| Bounds::around_all(b));
+    let magnitude = bounds[0].around(&bounds[1]).magnitude();
     let margin = 2.0 * rounding::clearance(magnitude);
     let shortcuts = &options.shortcuts;
     let [subject_boxes, clipping_boxes] = boxes.each_ref().map(Vec::as_slice);

@@ -366,13 +366,7 @@ mod tests {
             vec![square(110.0, 0.0, 10.0)],
             vec![square(118.0, 8.0, 10.0)],
         ]);
-        let boxes: Vec<Bounds> = (operand.0.iter())
-            .map(|p| {
-                p.rings()
-                    .flatten()
-                    .fold(Bounds::EMPTY, |b, q| b.around(&Bounds::at(q)))
-            })
-            .collect();
+        let boxes = crate::input::boxes(&operand);
         let judged = |x0: f64, y0: f64, x1: f64, y1: f64| {
             Bounds::at(&Point::new(x0, y0)).around(&Bounds::at(&Point::new(x1, y1)))
         };
