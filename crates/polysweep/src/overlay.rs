@@ -138,8 +138,9 @@ fn overlay_many_in(
 /// `operand` read by its structure ([`FillRule::Structure`]), as a valid polygon set: each ring's own region by the
 /// non-zero rule of that ring alone, each polygon its exterior's region less the union of its holes' regions, the
 /// operand the union of its polygons. Not in the paper: GEOS's `make_valid` by structure, and polygon-clipping's
-/// reading of input. A sweep per ring and per polygon with holes, then one over all polygons: exact, as every sweep
-/// is, and about three times the work of reading the operand by another rule. `magnitude` bounds its coordinates.
+/// reading of input. A sweep per ring and per polygon with holes, then one over all polygons, each exact up to the
+/// rounding of its own output (as `overlay_many`'s normalisation is), and about three times the work of reading
+/// the operand by another rule. `magnitude` bounds its coordinates.
 fn read_by_structure(
     operand: &MultiPolygon,
     magnitude: f64,
