@@ -17,6 +17,13 @@ const CONTENT_TYPES = {
   '.map': 'application/json; charset=utf-8',
 };
 
+/** Stops a server that `serve` started (or nothing, when none was), dropping open keep-alive connections. */
+export async function stopServer(server) {
+  if (!server) return;
+  server.closeAllConnections();
+  await new Promise((resolve) => server.close(resolve));
+}
+
 /**
  * Serves `root` at '/', each directory of `mounts` (URL prefix → directory) under its prefix, and each entry of
  * `generated` (URL path → function returning the body) as JSON. Resolves to the running server and its origin.

@@ -10,7 +10,7 @@ import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync } 
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { serve } from '../serve.mjs';
+import { serve, stopServer } from '../serve.mjs';
 import { launchChromium, runPage as openPage } from './chromium.mjs';
 import { build, createLogger } from 'vite';
 import { normalise, area } from './normalise.mjs';
@@ -51,10 +51,7 @@ before(async () => {
 
 after(async () => {
   await closeChromium?.();
-  if (server) {
-    server.closeAllConnections();
-    await new Promise((resolve) => server.close(resolve));
-  }
+  await stopServer(server);
   for (const dir of temporary) rmSync(dir, { recursive: true, force: true });
 });
 

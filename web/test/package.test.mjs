@@ -31,7 +31,7 @@ import { gzipSync } from 'node:zlib';
 import * as esbuild from 'esbuild';
 import { build as viteBuild, createLogger } from 'vite';
 import webpack from 'webpack';
-import { serve } from '../serve.mjs';
+import { serve, stopServer } from '../serve.mjs';
 import { launchChromium, runPage as openPage } from './chromium.mjs';
 import { normalise, area } from './normalise.mjs';
 
@@ -256,10 +256,7 @@ before(async () => {
 
 after(async () => {
   await closeChromium?.();
-  if (server) {
-    server.closeAllConnections();
-    await new Promise((resolve) => server.close(resolve));
-  }
+  await stopServer(server);
   await esbuild.stop?.();
   if (temporary) rmSync(temporary, { recursive: true, force: true, maxRetries: 5, retryDelay: 200 });
 });

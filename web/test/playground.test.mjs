@@ -10,7 +10,7 @@ import assert from 'node:assert/strict';
 import { existsSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { repositoryRoot, serve } from '../serve.mjs';
+import { repositoryRoot, serve, stopServer } from '../serve.mjs';
 import { launchChromium } from './chromium.mjs';
 
 const VIEWPORT = { width: 1200, height: 800 };
@@ -56,8 +56,7 @@ before(async () => {
 
 after(async () => {
   await closeChromium?.();
-  server?.closeAllConnections();
-  await new Promise((resolve) => (server ? server.close(resolve) : resolve()));
+  await stopServer(server);
 });
 
 const near = (colour, [r, g, b], tolerance) =>
