@@ -47,7 +47,7 @@ function optionsOf(options) {
   if (options !== undefined && options !== null && typeof options !== 'object') {
     throw new TypeError(`options must be an object such as {fillRule: 'nonzero'}, not ${describe(options)}`);
   }
-  const rule = options?.fillRule ?? 'evenodd';
+  const rule = options?.fillRule ?? 'structure';
   if (!isKeyOf(FILL_RULES, rule)) {
     const names = Object.keys(FILL_RULES).map((name) => `'${name}'`);
     throw new TypeError(`options.fillRule must be ${names.slice(0, -1).join(', ')} or ${names.at(-1)}, not ${describe(rule)}`);

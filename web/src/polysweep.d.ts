@@ -35,16 +35,17 @@ export type Operand =
 export type AnyOperand = Operand | Geometry | Feature<Geometry | null, any>;
 
 /**
- * How an operand's rings define its interior: 'evenodd' (the default: inside an odd number of rings), 'nonzero'
- * (winding number not 0), 'positive' (winding number above 0: counter-clockwise rings fill, clockwise ones cut),
- * 'negative' (below 0), as in Clipper2; or 'structure', polygon-clipping's reading of GeoJSON: each ring's own
- * region (orientation does not matter), a polygon its exterior less its holes, an operand the union of its
- * polygons (about three times the work of the other rules on any input).
+ * How an operand's rings define its interior: 'structure' (the default), polygon-clipping's reading of GeoJSON:
+ * each ring's own region (orientation does not matter), a polygon its exterior less its holes, an operand the union
+ * of its polygons; 'evenodd' (inside an odd number of rings, the paper's rule), 'nonzero' (winding number not 0),
+ * 'positive' (winding number above 0: counter-clockwise rings fill, clockwise ones cut) or 'negative' (below 0),
+ * as in Clipper2. On valid input every rule gives the same result at the same cost; 'structure' costs about three
+ * times as much only on operands that are not valid polygon sets.
  */
 export type FillRule = 'evenodd' | 'nonzero' | 'positive' | 'negative' | 'structure';
 
 export interface Options {
-  /** How an operand's rings define its interior; 'evenodd' by default. */
+  /** How an operand's rings define its interior; 'structure' (polygon-clipping's reading) by default. */
   fillRule?: FillRule;
   /** Read Points, LineStrings and their Multi forms as nothing instead of throwing. */
   skipNonPolygonal?: boolean;

@@ -9,13 +9,14 @@
 //! the wasm benchmark (web/bench/wasm.mjs). `cargo run --release -p polysweep-bench`.
 //!
 //! For profiling, arguments narrow the run: `-- polysweep 3895` runs only the engines and sizes named (engine names,
-//! `floor` for the sort floor, numbers of squares) and writes no report.
+//! `floor` for the sort floor, numbers of squares) and writes no report. `BENCH_FILL_RULE=structure` runs polysweep
+//! under the structural reading (the npm package's default) instead of even-odd.
 
 use geo::{Area, BooleanOps};
 use i_overlay::core::fill_rule::FillRule as IFillRule;
 use i_overlay::core::overlay_rule::OverlayRule;
 use i_overlay::float::single::SingleFloatOverlay;
-use polysweep::{MultiPolygon, Operation, Options};
+use polysweep::{FillRule, MultiPolygon, Operation, Options};
 use serde_json::{json, Value};
 use std::io::Read;
 use std::path::Path;
@@ -223,11 +224,16 @@ fn workload<'a>(
         "union" => (Operation::Union, OverlayRule::Union),
         _ => (Operation::Difference, OverlayRule::Difference),
     };
+    let fill_rule = match std::env::var("BENCH_FILL_RULE").as_deref() {
+        Ok("structure") => FillRule::Structure,
+        _ => FillRule::EvenOdd,
+    };
+    let options = Options::default().with_fill_rule(fill_rule);
     let engines: Vec<(&'static str, Engine<'a>)> = vec![
         (
             "polysweep",
             Box::new(move || {
-                polysweep::overlay(op.0, &land.ours, &clip.ours, &Options::default())
+                polysweep::overlay(op.0, &land.ours, &clip.ours, &options)
                     .unwrap()
                     .area()
             }),

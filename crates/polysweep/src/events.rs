@@ -239,11 +239,16 @@ pub(crate) struct SortScratch {
 /// next to each other, are sorted again by y, and the endpoints at one point by [`order_at_point`]. The sort moves
 /// small keys and reads the compact edges, never the larger events. It works in `scratch`, and writes the events
 /// into `events` (given empty, with the room of an earlier sweep).
+///
+/// `shared_vertex[k]` is set where operand `k` has more than two endpoints at one point: rings of it that touch
+/// or meet there, or a ring that passes twice through it (read by [`crate::structure`]; found where the sort
+/// already looks at every endpoint at such a point, so it costs nothing elsewhere).
 pub(crate) fn initial_events(
     edges: &[InputEdge],
     exact: &Exact,
     scratch: &mut SortScratch,
     mut events: Vec<SweepEvent>,
+    shared_vertex: &mut [bool; 2],
 ) -> Vec<SweepEvent> {
     // An endpoint is `2 · edge + 1` for a left endpoint, `2 · edge` for a right one.
     let point = |end: u32| {
@@ -333,6 +338,12 @@ pub(crate) fn initial_events(
                     .flat_map(|&(_, ends)| ends)
                     .filter(|&end| end != NONE),
             );
+            for (k, shared) in shared_vertex.iter_mut().enumerate() {
+                let ends = at_one_point
+                    .iter()
+                    .filter(|&&end| edges[end as usize / 2].operand as usize == k);
+                *shared |= ends.count() > 2;
+            }
             at_one_point
                 .sort_unstable_by(|&a, &b| order_at_point(exact, &at_point(a), &at_point(b)));
             order.extend_from_slice(&at_one_point);
@@ -395,7 +406,13 @@ mod tests {
         add_edges(&mut edges, &subject, 0, |_| true);
         add_edges(&mut edges, &clipping, 1, |_| true);
         let exact = Exact::default();
-        let events = initial_events(&edges, &exact, &mut Default::default(), Vec::new());
+        let events = initial_events(
+            &edges,
+            &exact,
+            &mut Default::default(),
+            Vec::new(),
+            &mut [false; 2],
+        );
         assert_eq!(events.len(), 2 * edges.len());
         for i in 1..events.len() as EventId {
             assert_eq!(
@@ -425,6 +442,7 @@ mod tests {
             },
             operand: 1,
             winding: -1,
+            starts_ring: false,
         };
         let split_point = SweepPoint::input([0.5, 0.0]);
         let largest = OTHER_AT_INPUT_END - 1;
@@ -462,6 +480,7 @@ mod tests {
             },
             operand: 0,
             winding: 1,
+            starts_ring: false,
         };
         let mut event = SweepEvent::initial(&edge, 0, true, 1);
         assert_eq!((event.node(), event.result_edge()), (NONE, NONE));

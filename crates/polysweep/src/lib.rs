@@ -60,6 +60,7 @@ mod prune;
 mod rounding;
 mod select;
 mod status;
+mod structure;
 mod subdivide;
 mod sweep;
 // What every stage uses.

@@ -63,6 +63,9 @@ pub struct Shortcuts {
     pub insert_after_last: bool,
     /// Each thread keeps its working memory from one operation to the next.
     pub keep_working_memory: bool,
+    /// Under the structural reading, an operation is first swept under even-odd, watched, and its operands read by
+    /// their structure only where the sweep finds that the two rules read them differently.
+    pub watch_structure: bool,
 }
 
 impl Shortcuts {
@@ -77,6 +80,7 @@ impl Shortcuts {
         successor_in_place: true,
         insert_after_last: true,
         keep_working_memory: true,
+        watch_structure: true,
     };
 
     /// Every shortcut off: the paper's algorithm (with exact predicates and output rounding).
@@ -90,6 +94,7 @@ impl Shortcuts {
         successor_in_place: false,
         insert_after_last: false,
         keep_working_memory: false,
+        watch_structure: false,
     };
 }
 

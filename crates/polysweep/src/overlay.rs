@@ -14,6 +14,7 @@ use crate::geometry::MultiPolygon;
 use crate::input::{self, Bounds};
 use crate::options::Options;
 use crate::select::{FillRule, Operation, Selection};
+use crate::structure::{add_watched_edges, valid_by_structure, Watch};
 use crate::sweep::Sweep;
 use crate::workspace::{self, Workspace};
 use crate::{connect, prune, rounding};
@@ -26,37 +27,60 @@ pub(crate) fn overlay_pair(
     options: &Options,
 ) -> Result<(MultiPolygon, Stats), Error> {
     let boxes = [input::check(0, subject)?, input::check(1, clipping)?];
-    if options.fill_rule == FillRule::Structure {
-        let [subject_box, clipping_box] = boxes.each_ref().map(|b| Bounds::around_all(b));
-        let magnitude = subject_box.around(&clipping_box).magnitude();
-        // Each operand read by its structure is a valid polygon set, which the even-odd rule reads as it is. (Not
-        // checked again: its vertices are the input's and crossings between them, which the sweep takes as they
-        // come, as it does in `overlay_many`.)
-        let [subject, clipping] =
-            workspace::with(options.shortcuts.keep_working_memory, |workspace| {
-                let mut read = |operand| read_by_structure(operand, magnitude, options, workspace);
-                Ok::<_, Error>([read(subject)?, read(clipping)?])
-            })?;
-        let boxes = [input::boxes(&subject), input::boxes(&clipping)];
-        let options = options.with_fill_rule(FillRule::EvenOdd);
-        return overlay_checked(operation, [&subject, &clipping], boxes, &options);
+    if options.fill_rule != FillRule::Structure {
+        return overlay_checked(operation, [subject, clipping], boxes, options, None);
     }
-    overlay_checked(operation, [subject, clipping], boxes, options)
+    // Under the structural reading: valid operands are read alike by the even-odd rule, which a watched sweep
+    // tells (see `structure`); only otherwise is each made a valid polygon set first.
+    let even_odd = options.with_fill_rule(FillRule::EvenOdd);
+    if options.shortcuts.watch_structure {
+        let mut watch = Watch::new();
+        let watched = overlay_checked(
+            operation,
+            [subject, clipping],
+            boxes.clone(),
+            &even_odd,
+            Some(&mut watch),
+        )?;
+        if watch.alike == [true; 2] {
+            return Ok(watched);
+        }
+    }
+    let [subject_box, clipping_box] = boxes.each_ref().map(|b| Bounds::around_all(b));
+    let magnitude = subject_box.around(&clipping_box).magnitude();
+    // (Not checked again: their vertices are the input's and crossings between them, which the sweep takes as they
+    // come, as it does in `overlay_many`.)
+    let ([subject, clipping], restructured) =
+        workspace::with(options.shortcuts.keep_working_memory, |workspace| {
+            let mut read = |operand| valid_by_structure(operand, magnitude, options, workspace);
+            let ((subject, s), (clipping, c)) = (read(subject)?, read(clipping)?);
+            Ok::<_, Error>(([subject, clipping], usize::from(s) + usize::from(c)))
+        })?;
+    let boxes = [input::boxes(&subject), input::boxes(&clipping)];
+    let (result, stats) =
+        overlay_checked(operation, [&subject, &clipping], boxes, &even_odd, None)?;
+    let stats = Stats {
+        operands_restructured: restructured,
+        ..stats
+    };
+    Ok((result, stats))
 }
 
-/// [`overlay_pair`] on operands already checked, whose polygons' boxes are `boxes`.
-fn overlay_checked(
+/// [`overlay_pair`] on operands already checked, whose polygons' boxes are `boxes`; with `watch`, watched for the
+/// structural reading (see [`crate::structure`]).
+pub(crate) fn overlay_checked(
     operation: Operation,
     [subject, clipping]: [&MultiPolygon; 2],
     boxes: [Vec<Bounds>; 2],
     options: &Options,
+    mut watch: Option<&mut Watch>,
 ) -> Result<(MultiPolygon, Stats), Error> {
     let bounds = boxes.each_ref().map(|b| Bounds::around_all(b));
     let magnitude = bounds[0].around(&bounds[1]).magnitude();
     let margin = 2.0 * rounding::clearance(magnitude);
     let shortcuts = &options.shortcuts;
     let [subject_boxes, clipping_boxes] = boxes.each_ref().map(Vec::as_slice);
-    let plan = prune::plan(
+    let mut plan = prune::plan(
         operation,
         [subject, clipping],
         [subject_boxes, clipping_boxes],
@@ -64,16 +88,28 @@ fn overlay_checked(
         shortcuts,
         margin,
     );
+    // Clipping polygons judged by the subject's even-odd winding number are judged by its structural one only where
+    // the two agree: the whole subject is then watched (see `structure`).
+    if watch.is_some() && plan.judged_by_subject && operation == Operation::Intersection {
+        plan.subject.fill(true);
+    }
     workspace::with(shortcuts.keep_working_memory, |workspace| {
         let mut edges = workspace::take(&mut workspace.edges);
-        input::add_edges(&mut edges, subject, 0, |p| plan.subject[p]);
-        input::add_edges(&mut edges, clipping, 1, |p| plan.clipping[p]);
+        if let Some(watch) = watch.as_deref_mut() {
+            add_watched_edges(&mut edges, subject, 0, |p| plan.subject[p], watch);
+            add_watched_edges(&mut edges, clipping, 1, |p| plan.clipping[p], watch);
+        } else {
+            input::add_edges(&mut edges, subject, 0, |p| plan.subject[p]);
+            input::add_edges(&mut edges, clipping, 1, |p| plan.clipping[p]);
+        }
         let selection = Selection::Pair {
             operation,
             fill_rule: options.fill_rule,
         };
         let stop_x = stop_x(operation, &bounds, options);
-        let (mut result, stats) = sweep(edges, selection, stop_x, magnitude, options, workspace)?;
+        let (mut result, stats) = sweep(
+            edges, selection, stop_x, magnitude, options, workspace, watch,
+        )?;
         result.0.extend(plan.copies);
         Ok((result, stats))
     })
@@ -112,11 +148,20 @@ fn overlay_many_in(
     for (index, operand) in operands.iter().enumerate() {
         let magnitude = boxes[index].magnitude();
         let valid = if options.fill_rule == FillRule::Structure {
-            read_by_structure(operand, magnitude, options, workspace)?
+            valid_by_structure(operand, magnitude, options, workspace)?.0
         } else {
             let mut own = workspace::take(&mut workspace.edges);
             input::add_edges(&mut own, operand, 0, |_| true);
-            sweep(own, normalise, f64::INFINITY, magnitude, options, workspace)?.0
+            sweep(
+                own,
+                normalise,
+                f64::INFINITY,
+                magnitude,
+                options,
+                workspace,
+                None,
+            )?
+            .0
         };
         let slot = u8::from(operation == Operation::Difference && index > 0);
         input::add_edges(&mut edges, &valid, slot, |_| true);
@@ -132,85 +177,10 @@ fn overlay_many_in(
     };
     let magnitude = Bounds::around_all(&boxes).magnitude();
     let stop_x = stop_x(operation, &boxes, options);
-    Ok(sweep(edges, selection, stop_x, magnitude, options, workspace)?.0)
-}
-
-/// `operand` read by its structure ([`FillRule::Structure`]), as a valid polygon set: each ring's own region by the
-/// non-zero rule of that ring alone, each polygon its exterior's region less the union of its holes' regions, the
-/// operand the union of its polygons. Not in the paper: GEOS's `make_valid` by structure, and polygon-clipping's
-/// reading of input. A sweep per ring and per polygon with holes, then one over all polygons, each exact up to the
-/// rounding of its own output (as `overlay_many`'s normalisation is), and about three times the work of reading
-/// the operand by another rule. `magnitude` bounds its coordinates.
-fn read_by_structure(
-    operand: &MultiPolygon,
-    magnitude: f64,
-    options: &Options,
-    workspace: &mut Workspace,
-) -> Result<MultiPolygon, Error> {
-    let sweep_edges = |add: &dyn Fn(&mut Vec<InputEdge>), selection, workspace: &mut Workspace| {
-        let mut edges = workspace::take(&mut workspace.edges);
-        add(&mut edges);
-        Ok::<_, Error>(
-            sweep(
-                edges,
-                selection,
-                f64::INFINITY,
-                magnitude,
-                options,
-                workspace,
-            )?
-            .0,
-        )
-    };
-    let alone = Selection::Pair {
-        operation: Operation::Union,
-        fill_rule: FillRule::NonZero,
-    };
-    let less_holes = Selection::Count {
-        operation: Operation::Difference,
-        operands: 1,
-    };
-    let mut regions = Vec::with_capacity(operand.0.len());
-    for polygon in &operand.0 {
-        let exterior = &polygon.exterior;
-        let outer = sweep_edges(
-            &|edges| input::add_ring_edges(edges, exterior, 0),
-            alone,
-            workspace,
-        )?;
-        if polygon.holes.is_empty() || outer.0.is_empty() {
-            regions.push(outer);
-            continue;
-        }
-        let mut holes = Vec::with_capacity(polygon.holes.len());
-        for hole in &polygon.holes {
-            holes.push(sweep_edges(
-                &|edges| input::add_ring_edges(edges, hole, 0),
-                alone,
-                workspace,
-            )?);
-        }
-        let add = |edges: &mut Vec<InputEdge>| {
-            input::add_edges(edges, &outer, 0, |_| true);
-            for hole in &holes {
-                input::add_edges(edges, hole, 1, |_| true);
-            }
-        };
-        regions.push(sweep_edges(&add, less_holes, workspace)?);
-    }
-    let union = Selection::Count {
-        operation: Operation::Union,
-        operands: regions.len() as i32,
-    };
-    sweep_edges(
-        &|edges| {
-            regions
-                .iter()
-                .for_each(|r| input::add_edges(edges, r, 0, |_| true))
-        },
-        union,
-        workspace,
-    )
+    Ok(sweep(
+        edges, selection, stop_x, magnitude, options, workspace, None,
+    )?
+    .0)
 }
 
 /// Past this x the result can have no edge, so the sweep stops there (the end of the subject for a difference,
@@ -239,13 +209,15 @@ const MAX_REPAIR_PASSES: usize = 4;
 /// The sweep of Fig. 5 over `edges`, whose coordinates are of magnitude `magnitude` at most, then the result
 /// rounded to f64 and, where rounding may have broken it, repaired by sweeping it again (see the robustness page;
 /// the result lies within the edges' box, so within the same magnitude). `edges` is given to `workspace` once done.
-fn sweep(
+/// `watch`, if any, watches the first sweep (see [`crate::structure`]).
+pub(crate) fn sweep(
     mut edges: Vec<InputEdge>,
     selection: Selection,
     stop_x: f64,
     magnitude: f64,
     options: &Options,
     workspace: &mut Workspace,
+    watch: Option<&mut Watch>,
 ) -> Result<(MultiPolygon, Stats), Error> {
     let first = Pass {
         stop_x,
@@ -253,7 +225,7 @@ fn sweep(
         may_snap: MAX_REPAIR_PASSES > 0,
     };
     let (mut result, mut stats, mut suspect) =
-        sweep_once(&edges, selection, first, options, workspace)?;
+        sweep_once(&edges, selection, first, options, workspace, watch)?;
     stats.input_edges = edges.len();
     while suspect && stats.repair_passes < MAX_REPAIR_PASSES {
         edges.clear();
@@ -268,7 +240,7 @@ fn sweep(
             magnitude,
             may_snap: stats.repair_passes < MAX_REPAIR_PASSES,
         };
-        (result, _, suspect) = sweep_once(&edges, repair, pass, options, workspace)?;
+        (result, _, suspect) = sweep_once(&edges, repair, pass, options, workspace, None)?;
     }
     workspace.edges = edges;
     Ok((result, stats))
@@ -291,6 +263,7 @@ fn sweep_once(
     pass: Pass,
     options: &Options,
     workspace: &mut Workspace,
+    watch: Option<&mut Watch>,
 ) -> Result<(MultiPolygon, Stats, bool), Error> {
     // (Checked before the events are made: their construction counts endpoints in 32 bits.)
     if 2 * edges.len() > MAX_EVENTS {
@@ -305,7 +278,13 @@ fn sweep_once(
         shortcuts,
         workspace,
     );
+    sweep.watch = watch;
     sweep.run()?;
+    if let Some(watch) = sweep.watch.as_deref_mut() {
+        for (alike, shared) in watch.alike.iter_mut().zip(sweep.shared_vertex) {
+            *alike &= !shared;
+        }
+    }
     let stats = Stats {
         crossings: sweep.exact.crossing_count(),
         events: sweep.events.len(),
@@ -354,4 +333,7 @@ pub struct Stats {
     /// Extra sweeps over the rounded result because rounding put vertices within a few ulps of each other (see
     /// the robustness page). Almost always 0.
     pub repair_passes: usize,
+    /// Under [`FillRule::Structure`], the operands that had to be read by their structure: 0 where every operand is
+    /// valid input (simple rings apart from each other, holes in their own shells), which is read as it is.
+    pub operands_restructured: usize,
 }

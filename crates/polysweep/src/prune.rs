@@ -59,6 +59,8 @@ pub(crate) struct Plan {
     pub subject: Vec<bool>,
     pub clipping: Vec<bool>,
     pub copies: Vec<Polygon>,
+    /// Some clipping polygon was judged inside or outside the subject by the subject's winding number.
+    pub judged_by_subject: bool,
 }
 
 /// What to sweep of `subject` and `clipping` (their polygons' boxes `boxes`) for `operation`, with the shortcuts
@@ -79,6 +81,7 @@ pub(crate) fn plan(
         subject: vec![true; subject.0.len()],
         clipping: vec![true; clipping.0.len()],
         copies: Vec::new(),
+        judged_by_subject: false,
     };
     if operation == Operation::Xor {
         return plan; // every polygon of either operand changes a xor
@@ -92,6 +95,7 @@ pub(crate) fn plan(
     } else {
         vec![None; clipping.0.len()]
     };
+    plan.judged_by_subject = inside.iter().any(Option::is_some);
     let left_out = if operation == Operation::Union {
         Some(true)
     } else {

@@ -62,6 +62,7 @@ impl Sweep<'_> {
             (_, _, Equal, _) => a2,
             (_, _, _, Equal) => b2,
             _ => {
+                self.watch_contact(lower, upper);
                 let x = self.exact.crossing(&l1, &l2);
                 self.split_crossing(lower, upper, x);
                 return;
@@ -69,6 +70,7 @@ impl Sweep<'_> {
         };
         for node in [lower, upper] {
             if self.strictly_inside(node, &meeting) {
+                self.watch_contact(lower, upper);
                 self.split(self.status.event(node), meeting);
             }
         }
@@ -83,6 +85,7 @@ impl Sweep<'_> {
         {
             return; // they touch at an endpoint at most
         }
+        self.watch_contact(lower, upper);
         for (node, [first, last]) in [(lower, [a2, b2]), (upper, [a1, b1])] {
             // The far point first, so that the edge keeps its left part and the second split cuts that part.
             for p in [last, first] {

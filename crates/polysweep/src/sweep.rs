@@ -39,6 +39,7 @@ use crate::events::{
 use crate::exact::{Exact, Line, SweepPoint};
 use crate::options::Shortcuts;
 use crate::select::{Flags, Selection};
+use crate::structure::Watch;
 use crate::workspace::{take, Workspace};
 
 mod close_calls;
@@ -55,7 +56,7 @@ use std::cmp::Ordering;
 pub(crate) struct InStatus {
     pub line: Line,
     operand: Operand,
-    segment: u32,
+    pub segment: u32,
     pub event: EventId,
     /// The endpoints of the edge (not of its input segment), left and right.
     pub left: SweepPoint,
@@ -101,6 +102,10 @@ pub(crate) struct Sweep<'a> {
     stopped: bool,
     /// Which of the shortcuts of [`shortcuts`] are on.
     pub shortcuts: Shortcuts,
+    /// Per operand: more than two of its endpoints at one input point (see [`initial_events`]).
+    pub shared_vertex: [bool; 2],
+    /// What the structural reading's check watches, when it is on (see [`crate::structure`]).
+    pub watch: Option<&'a mut Watch>,
 }
 
 impl<'a> Sweep<'a> {
@@ -115,11 +120,13 @@ impl<'a> Sweep<'a> {
         workspace: &mut Workspace,
     ) -> Self {
         let exact = Exact::default();
+        let mut shared_vertex = [false; 2];
         let events = initial_events(
             edges,
             &exact,
             &mut workspace.sort,
             take(&mut workspace.events),
+            &mut shared_vertex,
         );
         let queue = EventQueue::new(events.len());
         // Every vertex has two events at least (a ring vertex two, a crossing four): room for as many vertices as
@@ -148,6 +155,8 @@ impl<'a> Sweep<'a> {
             max_events: MAX_EVENTS,
             stopped: false,
             shortcuts,
+            shared_vertex,
+            watch: None,
         }
     }
 
@@ -369,6 +378,7 @@ impl<'a> Sweep<'a> {
         if !neighbours_checked {
             for neighbour in [below, above] {
                 if neighbour != NONE && self.passes_through(neighbour, &p) {
+                    self.watch_contact(neighbour, node);
                     self.split(self.status.event(neighbour), p);
                     self.status.remove(node);
                     self.events[e as usize].leave_status();
@@ -380,6 +390,9 @@ impl<'a> Sweep<'a> {
             self.note_close_calls(&p, node);
         }
         self.set_flags(node);
+        if self.input_edge(e).starts_ring {
+            self.watch_ring_start(e, node);
+        }
 
         // (Nothing since the caller chose `meets_only_here` has inserted into S, so its index still names that edge,
         // or none.)
