@@ -57,9 +57,11 @@ test('GeoJSON geometries and features answer in kind', () => {
 });
 
 test('fill rule option', () => {
-  // Two overlapping counter-clockwise squares in one operand: a hole under even-odd, filled under non-zero.
+  // Two overlapping counter-clockwise squares in one operand: a hole under even-odd, filled under non-zero and under
+  // the default, polygon-clipping's structural reading (the union of the operand's polygons).
   const both = [square(0, 0), square(1, 1)];
-  assert.equal(area(union(both, [])), 6);
+  assert.equal(area(union(both, [])), 7);
+  assert.equal(area(union(both, [], { fillRule: 'evenodd' })), 6);
   assert.equal(area(union(both, [], { fillRule: 'nonzero' })), 7);
   assert.throws(() => union(both, [], { fillRule: 'winding' }), TypeError);
 });

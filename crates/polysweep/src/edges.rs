@@ -19,9 +19,6 @@ pub(crate) struct InputEdge {
     pub operand: Operand,
     /// +1 when the ring runs from `a` to `b`, else -1 (see [`crate::events::SweepEvent::winding`]).
     pub winding: i32,
-    /// The lower of the two edges at its ring's lowest-leftmost vertex, where the sweep first meets the ring: marked
-    /// only for the structural reading's check (see [`crate::structure`]).
-    pub starts_ring: bool,
 }
 
 /// An edge of the result, oriented with the result on its left.

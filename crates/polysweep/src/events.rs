@@ -228,6 +228,22 @@ pub(crate) struct SortScratch {
     pub order: Vec<u32>,
     pub position: Vec<u32>,
     pub buckets: Vec<u32>,
+    /// Per operand: more than two of its endpoints at one point, rings of it that touch or meet there or a ring
+    /// that passes twice through it (read by [`crate::structure`]).
+    pub shared_vertex: [bool; 2],
+}
+
+/// Notes in `shared` each operand with more than two of the endpoints `at_one_point`: found where the sort already
+/// looks at every endpoint at a point where several vertices meet, so it costs nothing elsewhere.
+#[cold]
+#[inline(never)]
+fn note_shared_vertex(shared: &mut [bool; 2], at_one_point: &[u32], edges: &[InputEdge]) {
+    for (k, shared) in shared.iter_mut().enumerate() {
+        let ends = at_one_point
+            .iter()
+            .filter(|&&end| edges[end as usize / 2].operand as usize == k);
+        *shared |= ends.count() > 2;
+    }
 }
 
 /// The initial events: two per input edge, created in the order of [`event_order`], so that the sweep reads them
@@ -238,18 +254,14 @@ pub(crate) struct SortScratch {
 /// keys that order like the coordinates, by value (see [`sort`]); those with one x, which then come out
 /// next to each other, are sorted again by y, and the endpoints at one point by [`order_at_point`]. The sort moves
 /// small keys and reads the compact edges, never the larger events. It works in `scratch`, and writes the events
-/// into `events` (given empty, with the room of an earlier sweep).
-///
-/// `shared_vertex[k]` is set where operand `k` has more than two endpoints at one point: rings of it that touch
-/// or meet there, or a ring that passes twice through it (read by [`crate::structure`]; found where the sort
-/// already looks at every endpoint at such a point, so it costs nothing elsewhere).
+/// into `events` (given empty, with the room of an earlier sweep), and notes `scratch.shared_vertex`.
 pub(crate) fn initial_events(
     edges: &[InputEdge],
     exact: &Exact,
     scratch: &mut SortScratch,
     mut events: Vec<SweepEvent>,
-    shared_vertex: &mut [bool; 2],
 ) -> Vec<SweepEvent> {
+    scratch.shared_vertex = [false; 2];
     // An endpoint is `2 · edge + 1` for a left endpoint, `2 · edge` for a right one.
     let point = |end: u32| {
         let line = &edges[end as usize / 2].line;
@@ -338,23 +350,21 @@ pub(crate) fn initial_events(
                     .flat_map(|&(_, ends)| ends)
                     .filter(|&end| end != NONE),
             );
-            for (k, shared) in shared_vertex.iter_mut().enumerate() {
-                let ends = at_one_point
-                    .iter()
-                    .filter(|&&end| edges[end as usize / 2].operand as usize == k);
-                *shared |= ends.count() > 2;
-            }
+            note_shared_vertex(&mut scratch.shared_vertex, &at_one_point, edges);
             at_one_point
                 .sort_unstable_by(|&a, &b| order_at_point(exact, &at_point(a), &at_point(b)));
             order.extend_from_slice(&at_one_point);
         }
     }
-    let position = &mut scratch.position;
-    position.clear();
-    position.resize(order.len(), 0);
+    scratch.position.clear();
+    scratch.position.resize(order.len(), 0);
+    // (As slices, whose bounds stay in registers: through the vectors, a loop may read them again at every step,
+    // as it cannot tell that what it writes does not change them.)
+    let (order, position) = (scratch.order.as_slice(), scratch.position.as_mut_slice());
     for (i, &end) in order.iter().enumerate() {
         position[end as usize] = i as EventId;
     }
+    let position = &*position;
     // Room for a quarter as many events again from subdivision before the vector has to move (and be copied):
     // more than Table 1's workloads add. Room never used costs address space, not memory: its pages are never
     // touched.
@@ -406,13 +416,7 @@ mod tests {
         add_edges(&mut edges, &subject, 0, |_| true);
         add_edges(&mut edges, &clipping, 1, |_| true);
         let exact = Exact::default();
-        let events = initial_events(
-            &edges,
-            &exact,
-            &mut Default::default(),
-            Vec::new(),
-            &mut [false; 2],
-        );
+        let events = initial_events(&edges, &exact, &mut Default::default(), Vec::new());
         assert_eq!(events.len(), 2 * edges.len());
         for i in 1..events.len() as EventId {
             assert_eq!(
@@ -442,7 +446,6 @@ mod tests {
             },
             operand: 1,
             winding: -1,
-            starts_ring: false,
         };
         let split_point = SweepPoint::input([0.5, 0.0]);
         let largest = OTHER_AT_INPUT_END - 1;
@@ -480,7 +483,6 @@ mod tests {
             },
             operand: 0,
             winding: 1,
-            starts_ring: false,
         };
         let mut event = SweepEvent::initial(&edge, 0, true, 1);
         assert_eq!((event.node(), event.result_edge()), (NONE, NONE));

@@ -202,7 +202,6 @@ pub(crate) fn add_ring_edges(edges: &mut Vec<InputEdge>, ring: &[Point], operand
             operand,
             // Crossing an edge upwards enters a counter-clockwise ring when the edge runs left to right.
             winding: if forward { 1 } else { -1 },
-            starts_ring: false,
         });
     }
 }

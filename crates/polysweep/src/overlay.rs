@@ -33,7 +33,9 @@ pub(crate) fn overlay_pair(
     // Under the structural reading: valid operands are read alike by the even-odd rule, which a watched sweep
     // tells (see `structure`); only otherwise is each made a valid polygon set first.
     let even_odd = options.with_fill_rule(FillRule::EvenOdd);
+    let mut structure_sweeps = 0;
     if options.shortcuts.watch_structure {
+        structure_sweeps += 1;
         let mut watch = Watch::new();
         let watched = overlay_checked(
             operation,
@@ -50,17 +52,20 @@ pub(crate) fn overlay_pair(
     let magnitude = subject_box.around(&clipping_box).magnitude();
     // (Not checked again: their vertices are the input's and crossings between them, which the sweep takes as they
     // come, as it does in `overlay_many`.)
-    let ([subject, clipping], restructured) =
+    let [subject, clipping] =
         workspace::with(options.shortcuts.keep_working_memory, |workspace| {
-            let mut read = |operand| valid_by_structure(operand, magnitude, options, workspace);
-            let ((subject, s), (clipping, c)) = (read(subject)?, read(clipping)?);
-            Ok::<_, Error>(([subject, clipping], usize::from(s) + usize::from(c)))
+            let mut read = |operand| {
+                let (valid, sweeps) = valid_by_structure(operand, magnitude, options, workspace)?;
+                structure_sweeps += sweeps;
+                Ok::<_, Error>(valid)
+            };
+            Ok::<_, Error>([read(subject)?, read(clipping)?])
         })?;
     let boxes = [input::boxes(&subject), input::boxes(&clipping)];
     let (result, stats) =
         overlay_checked(operation, [&subject, &clipping], boxes, &even_odd, None)?;
     let stats = Stats {
-        operands_restructured: restructured,
+        structure_sweeps,
         ..stats
     };
     Ok((result, stats))
@@ -333,7 +338,10 @@ pub struct Stats {
     /// Extra sweeps over the rounded result because rounding put vertices within a few ulps of each other (see
     /// the robustness page). Almost always 0.
     pub repair_passes: usize,
-    /// Under [`FillRule::Structure`], the operands that had to be read by their structure: 0 where every operand is
-    /// valid input (simple rings apart from each other, holes in their own shells), which is read as it is.
-    pub operands_restructured: usize,
+    /// Under [`FillRule::Structure`], the sweeps that reading the operands by their structure added to the
+    /// operation's own: 0 where the operation's sweep found every operand a valid polygon set (simple rings apart
+    /// from each other, holes in their own shells), which it then reads as it is. Otherwise one for that first
+    /// sweep, then per operand one where a sweep of it alone finds it valid, or one per ring, one per polygon with
+    /// holes and one more (see [`crate::structure`]).
+    pub structure_sweeps: usize,
 }

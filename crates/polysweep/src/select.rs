@@ -51,7 +51,7 @@ pub enum FillRule {
     /// and an operand is the union of its polygons (so overlapping parts do not cancel). Where the input is a
     /// valid polygon set, this is what every rule reads, at the same cost: the sweep sees that it is valid. An
     /// operand it finds otherwise is first read by its structure, about three times the work (see
-    /// [`Stats::operands_restructured`](crate::Stats::operands_restructured)).
+    /// [`Stats::structure_sweeps`](crate::Stats::structure_sweeps)).
     Structure,
 }
 

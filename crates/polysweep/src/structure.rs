@@ -28,37 +28,36 @@
 
 use crate::edges::{EventId, InputEdge, Operand, NONE};
 use crate::error::Error;
-use crate::geometry::{orient, MultiPolygon, Point};
+use crate::geometry::MultiPolygon;
 use crate::input;
 use crate::options::Options;
 use crate::overlay::sweep;
 use crate::select::{FillRule, Operation, Selection};
 use crate::sweep::Sweep;
 use crate::workspace::{self, Workspace};
-use std::cmp::Ordering;
-
-/// The most edges of the other operand a ring's first edge looks past, down S, for the nearest edge of its own
-/// operand. Beyond it the sweep does not look further (which would cost up to the size of S per ring) and the
-/// operand is read by its structure instead.
-const MAX_STEPS_DOWN: usize = 64;
 
 /// What the sweep watches for the structural reading: the rings swept, and whether each operand is read alike by
 /// the even-odd rule and by its structure, as far as the sweep has seen.
 #[derive(Default)]
 pub(crate) struct Watch {
     rings: Vec<Ring>,
+    /// The ring of each input edge (an index into `rings`).
+    ring_of_edge: Vec<u32>,
     /// Per operand: no contact and no misnested ring seen yet.
     pub alike: [bool; 2],
+    /// How many more edges of the other operand the rings' first edges may look past, down S, for the nearest edge
+    /// of their own: as many as there are edges in all. Each look costs up to the size of S, so many rings far above
+    /// the nearest edge of their operand (a row of squares over a stack of bars) could cost the product of the two;
+    /// past the budget, the sweep looks no further and the operands are read by their structure instead.
+    steps_left: usize,
 }
 
 #[derive(Clone, Copy)]
 struct Ring {
-    /// Its first input edge; the ring's edges follow it.
-    first_edge: u32,
     polygon: u32,
     hole: bool,
-    /// The winding of the ring's first edge in sweep order: the ring's inside is above an edge of the ring whose
-    /// winding is this. 0 until the sweep reaches the ring.
+    /// The winding of the ring's first edge in sweep order, the lower of the two at its lowest-leftmost vertex: the
+    /// ring's inside is above an edge of the ring whose winding is this. 0 until the sweep reaches the ring.
     inside_above: i32,
     /// The ring directly around this one (an index into the rings), or `NONE`.
     around: u32,
@@ -68,17 +67,24 @@ impl Watch {
     pub fn new() -> Self {
         Watch {
             rings: Vec::new(),
+            ring_of_edge: Vec::new(),
             alike: [true; 2],
+            steps_left: 0,
         }
+    }
+
+    /// Has the sweep reached the ring of input edge `segment` yet?
+    pub fn reached(&self, segment: u32) -> bool {
+        self.rings[self.ring_of(segment)].inside_above != 0
     }
 
     /// The ring of input edge `segment`.
     fn ring_of(&self, segment: u32) -> usize {
-        self.rings.partition_point(|r| r.first_edge <= segment) - 1
+        self.ring_of_edge[segment as usize] as usize
     }
 }
 
-/// [`input::add_edges`], noting each ring in `watch` and marking the lower edge at its lowest-leftmost vertex.
+/// [`input::add_edges`], noting each ring and the ring of each edge in `watch`.
 pub(crate) fn add_watched_edges(
     edges: &mut Vec<InputEdge>,
     polygons: &MultiPolygon,
@@ -95,42 +101,17 @@ pub(crate) fn add_watched_edges(
             if edges.len() == first_edge {
                 continue;
             }
-            let lower = lower_edge_at_lowest_leftmost(&edges[first_edge..]);
-            edges[first_edge + lower].starts_ring = true;
+            watch.steps_left += edges.len() - first_edge;
+            watch
+                .ring_of_edge
+                .resize(edges.len(), watch.rings.len() as u32);
             watch.rings.push(Ring {
-                first_edge: first_edge as u32,
                 polygon: p as u32,
                 hole: r > 0,
                 inside_above: 0,
                 around: NONE,
             });
         }
-    }
-}
-
-/// Of the edges of one ring, the lower of the two that start at its lowest-leftmost vertex (an edge's left end
-/// in sweep order): the first edge of the ring that the sweep inserts in S. Where the two overlap (a spike), or
-/// the ring passes through that vertex again, either will do: the sweep finds the contact.
-fn lower_edge_at_lowest_leftmost(ring: &[InputEdge]) -> usize {
-    let key = |e: &InputEdge| (e.line.a[0], e.line.a[1]);
-    let (mut first, mut second) = (0, None);
-    for (i, edge) in ring.iter().enumerate().skip(1) {
-        match key(edge).partial_cmp(&key(&ring[first])) {
-            Some(Ordering::Less) => (first, second) = (i, None),
-            Some(Ordering::Equal) if second.is_none() => second = Some(i),
-            _ => {}
-        }
-    }
-    let Some(second) = second else {
-        return first;
-    };
-    // `first` is the lower when `second`'s far end lies to the left of (above) its line.
-    let point = |p: [f64; 2]| Point::new(p[0], p[1]);
-    let (a, b) = (&ring[first].line, &ring[second].line);
-    if orient(point(a.a), point(a.b), point(b.b)) == Ordering::Greater {
-        first
-    } else {
-        second
     }
 }
 
@@ -151,9 +132,11 @@ impl Sweep<'_> {
         }
     }
 
-    /// Left event `e`, at `node` in S, is of an input edge marked as its ring's first: where this is the ring's
-    /// first event (not a later part of that edge), finds the ring directly around it and checks that it nests as
-    /// a valid polygon set's ring does.
+    /// Left event `e`, at `node` in S, is the first of its ring that the sweep reaches: at the ring's lowest-leftmost
+    /// vertex (no edge of the ring starts before it), and the lower of the two edges there (§4 orders them so, and
+    /// the in-place step takes them in that order). Finds the ring directly around it and checks that it nests as a
+    /// valid polygon set's ring does.
+    #[inline(never)]
     pub(crate) fn watch_ring_start(&mut self, e: EventId, node: u32) {
         let segment = self.event(e).segment();
         let input = self.edges[segment as usize];
@@ -162,11 +145,9 @@ impl Sweep<'_> {
             return;
         };
         let ring = watch.ring_of(segment);
-        if watch.rings[ring].inside_above != 0 {
-            return;
-        }
-        let around = self.ring_around(node, k);
+        let (around, steps) = self.ring_around(node, k);
         let watch = self.watch.as_deref_mut().expect("read above");
+        watch.steps_left -= steps;
         watch.rings[ring].inside_above = input.winding;
         let Some(around) = around else {
             watch.alike[k] = false;
@@ -186,47 +167,53 @@ impl Sweep<'_> {
     }
 
     /// The ring of operand `k` directly around the point where the edge at `node` starts (`NONE`: none), from the
-    /// nearest edge of that operand below it in S; `None` where that cannot be told cheaply (see
-    /// [`MAX_STEPS_DOWN`]) or the edge is not one of that operand's rings (merged into another's, §7.2).
-    fn ring_around(&self, node: u32, k: usize) -> Option<u32> {
-        let watch = self.watch.as_deref()?;
+    /// nearest edge of that operand below it in S, and the edges of the other operand looked past; `None` where
+    /// that cannot be told within the budget (see [`Watch::steps_left`]) or the edge is not one of that operand's
+    /// rings (merged into another's, §7.2).
+    fn ring_around(&self, node: u32, k: usize) -> (Option<u32>, usize) {
+        let Some(watch) = self.watch.as_deref() else {
+            return (None, 0);
+        };
         let mut below = self.status.prev(node);
         let mut steps = 0;
         while below != NONE && self.events[self.status.event(below) as usize].winding[k] == 0 {
-            steps += 1;
-            if steps > MAX_STEPS_DOWN {
-                return None;
+            if steps == watch.steps_left {
+                return (None, steps);
             }
+            steps += 1;
             below = self.status.prev(below);
         }
         if below == NONE {
-            return Some(NONE);
+            return (Some(NONE), steps);
         }
         let edge = self.status.key(below);
         let input = &self.edges[edge.segment as usize];
         if input.operand as usize != k || edge.line.is_vertical() {
-            return None; // (a vertical edge below the point would end at or pass through it: a contact)
+            return (None, steps); // (a vertical edge below the point would end at or pass through it: a contact)
         }
         let t = watch.ring_of(edge.segment);
         let ring = &watch.rings[t];
-        Some(if input.winding == ring.inside_above {
+        let around = if input.winding == ring.inside_above {
             t as u32
         } else {
             ring.around
-        })
+        };
+        (Some(around), steps)
     }
 }
 
 /// `operand` as a valid polygon set, read by its structure: by one watched sweep where that finds the even-odd rule
-/// reads it alike (unless the shortcut is off), else by [`read_by_structure`] (then with `true`). `magnitude`
-/// bounds its coordinates.
+/// reads it alike (unless the shortcut is off), else by [`read_by_structure`]; with the number of sweeps made.
+/// `magnitude` bounds its coordinates.
 pub(crate) fn valid_by_structure(
     operand: &MultiPolygon,
     magnitude: f64,
     options: &Options,
     workspace: &mut Workspace,
-) -> Result<(MultiPolygon, bool), Error> {
+) -> Result<(MultiPolygon, usize), Error> {
+    let mut sweeps = 0;
     if options.shortcuts.watch_structure {
+        sweeps += 1;
         let mut watch = Watch::new();
         let mut edges = workspace::take(&mut workspace.edges);
         add_watched_edges(&mut edges, operand, 0, |_| true, &mut watch);
@@ -244,27 +231,27 @@ pub(crate) fn valid_by_structure(
             Some(&mut watch),
         )?;
         if watch.alike[0] {
-            return Ok((valid, false));
+            return Ok((valid, sweeps));
         }
     }
-    Ok((
-        read_by_structure(operand, magnitude, options, workspace)?,
-        true,
-    ))
+    let (valid, more) = read_by_structure(operand, magnitude, options, workspace)?;
+    Ok((valid, sweeps + more))
 }
 
 /// `operand` read by its structure ([`FillRule::Structure`]), as a valid polygon set: each ring's own region by the
 /// non-zero rule of that ring alone, each polygon its exterior's region less the union of its holes' regions, the
 /// operand the union of its polygons. A sweep per ring and per polygon with holes, then one over all polygons, each
-/// exact up to the rounding of its own output (as `overlay_many`'s normalisation is). `magnitude` bounds its
-/// coordinates.
+/// exact up to the rounding of its own output (as `overlay_many`'s normalisation is); with the number of sweeps.
+/// `magnitude` bounds its coordinates.
 pub(crate) fn read_by_structure(
     operand: &MultiPolygon,
     magnitude: f64,
     options: &Options,
     workspace: &mut Workspace,
-) -> Result<MultiPolygon, Error> {
+) -> Result<(MultiPolygon, usize), Error> {
+    let sweeps = std::cell::Cell::new(0);
     let sweep_edges = |add: &dyn Fn(&mut Vec<InputEdge>), selection, workspace: &mut Workspace| {
+        sweeps.set(sweeps.get() + 1);
         let mut edges = workspace::take(&mut workspace.edges);
         add(&mut edges);
         let swept = sweep(
@@ -318,7 +305,7 @@ pub(crate) fn read_by_structure(
         operation: Operation::Union,
         operands: regions.len() as i32,
     };
-    sweep_edges(
+    let valid = sweep_edges(
         &|edges| {
             regions
                 .iter()
@@ -326,7 +313,8 @@ pub(crate) fn read_by_structure(
         },
         union,
         workspace,
-    )
+    )?;
+    Ok((valid, sweeps.get()))
 }
 
 #[cfg(test)]
@@ -348,11 +336,7 @@ mod tests {
     }
 
     /// Whether the watched even-odd sweep of `subject` and `clipping` finds each read alike by both rules.
-    fn alike(
-        operation: Operation,
-        subject: &[Polygon],
-        clipping: &[Polygon],
-    ) -> [bool; 2] {
+    fn alike(operation: Operation, subject: &[Polygon], clipping: &[Polygon]) -> [bool; 2] {
         let (a, b) = (
             MultiPolygon::from_coordinates(subject),
             MultiPolygon::from_coordinates(clipping),
@@ -476,9 +460,10 @@ mod tests {
         }
     }
 
-    /// A square above a stack of more than `MAX_STEPS_DOWN` bars of the other operand: the ring around it is not
-    /// looked for past them. The operation is then swept again with each operand made valid on its own, where the
-    /// squares, alone, are seen to be valid and are read as they are.
+    /// Squares above a stack of 40 bars of the other operand: one is looked for past the bars' 80 edges in S, but
+    /// four squares would cost more steps (320) than there are edges (176), and the sweep gives up. The operation is
+    /// then swept again with each operand made valid on its own, where the squares and the bars, alone, are seen to
+    /// be valid and are read as they are: three sweeps more.
     #[test]
     fn a_ring_far_above_the_nearest_edge_of_its_operand_is_not_looked_for() {
         let bars: Coordinates = (0..40)
@@ -491,20 +476,21 @@ mod tests {
                 ]]
             })
             .collect();
-        let low_and_high = [vec![square(2.0, -10.0, 1.0)], vec![square(2.0, 100.0, 1.0)]];
-        assert_eq!(alike(Operation::Union, &low_and_high, &bars), [false, true]);
-        let few = &bars[..20];
-        assert_eq!(alike(Operation::Union, &low_and_high, few), [true, true]);
+        let row: Coordinates = (0..4)
+            .map(|i| vec![square(0.5 + 2.0 * f64::from(i), 100.0, 1.0)])
+            .collect();
+        assert_eq!(alike(Operation::Union, &row[..1], &bars), [true, true]);
+        assert_eq!(alike(Operation::Union, &row, &bars), [false, true]);
         let (a, b) = (
-            MultiPolygon::from_coordinates(&low_and_high),
+            MultiPolygon::from_coordinates(&row),
             MultiPolygon::from_coordinates(&bars),
         );
         let structure = Options::default().with_fill_rule(FillRule::Structure);
         let (result, stats) =
             crate::overlay_with_stats(Operation::Union, &a, &b, &structure).unwrap();
         assert_eq!(
-            (result.area(), stats.operands_restructured),
-            (2.0 + 40.0 * 10.0, 0)
+            (result.area(), stats.structure_sweeps),
+            (4.0 + 40.0 * 10.0, 3)
         );
     }
 
@@ -546,6 +532,8 @@ mod tests {
             crate::overlay_with_stats(Operation::Intersection, &subject, &clipping, &structure)
                 .unwrap();
         // Every one of the 16 squares of area 9 lies inside the big square.
-        assert_eq!((result.area(), stats.operands_restructured), (144.0, 1));
+        // The watched sweep; the subject made valid by its own three (two squares, then their union) after a watched
+        // one; the squares' own watched one.
+        assert_eq!((result.area(), stats.structure_sweeps), (144.0, 1 + 4 + 1));
     }
 }

@@ -120,14 +120,13 @@ impl<'a> Sweep<'a> {
         workspace: &mut Workspace,
     ) -> Self {
         let exact = Exact::default();
-        let mut shared_vertex = [false; 2];
         let events = initial_events(
             edges,
             &exact,
             &mut workspace.sort,
             take(&mut workspace.events),
-            &mut shared_vertex,
         );
+        let shared_vertex = workspace.sort.shared_vertex;
         let queue = EventQueue::new(events.len());
         // Every vertex has two events at least (a ring vertex two, a crossing four): room for as many vertices as
         // the events have room for, and for a result edge per input edge (a union of polygons apart keeps them
@@ -390,8 +389,10 @@ impl<'a> Sweep<'a> {
             self.note_close_calls(&p, node);
         }
         self.set_flags(node);
-        if self.input_edge(e).starts_ring {
-            self.watch_ring_start(e, node);
+        if let Some(watch) = self.watch.as_deref() {
+            if !watch.reached(self.event(e).segment()) {
+                self.watch_ring_start(e, node);
+            }
         }
 
         // (Nothing since the caller chose `meets_only_here` has inserted into S, so its index still names that edge,
