@@ -61,6 +61,8 @@ pub struct Shortcuts {
     pub successor_in_place: bool,
     /// A new edge is tried just above the edge inserted last before S is searched.
     pub insert_after_last: bool,
+    /// Two neighbours in S that start at one point, on two lines, are not tested for meeting elsewhere.
+    pub shared_start: bool,
     /// Each thread keeps its working memory from one operation to the next.
     pub keep_working_memory: bool,
     /// Under the structural reading, an operation is first swept under even-odd, watched, and its operands read by
@@ -79,6 +81,7 @@ impl Shortcuts {
         crossing_step: true,
         successor_in_place: true,
         insert_after_last: true,
+        shared_start: true,
         keep_working_memory: true,
         watch_structure: true,
     };
@@ -93,6 +96,7 @@ impl Shortcuts {
         crossing_step: false,
         successor_in_place: false,
         insert_after_last: false,
+        shared_start: false,
         keep_working_memory: false,
         watch_structure: false,
     };

@@ -97,6 +97,21 @@ impl Sweep<'_> {
         self.settle(above_next, upper, true, lower);
     }
 
+    /// Do the new edge at `node` of S and its neighbour at `other` both start at the current point, on two lines?
+    /// Then they meet there only, and possibleInter, which could find nothing else, is not asked (not in the paper):
+    /// at a square's lower-left corner, a coastline's leftmost vertices, wherever a ring starts. Told by the output
+    /// vertex of their left ends, an integer, and one orientation (the neighbour's right end off the new edge's line;
+    /// on it, the two may overlap, §7.2, and possibleInter is asked).
+    #[inline(always)]
+    pub(super) fn start_here_apart(&self, node: u32, other: u32) -> bool {
+        if !self.shortcuts.shared_start {
+            return false;
+        }
+        let (new, neighbour) = (self.status.key(node), self.status.key(other));
+        neighbour.vertex == new.vertex
+            && self.exact.orient(&new.line, &neighbour.right) != Ordering::Equal
+    }
+
     /// A chain going on (not in the paper): when the next event is a left endpoint at this point whose edge belongs
     /// exactly where the ending edge at `node` is in S, it is taken from Q to replace that edge in place: no
     /// removal, no search from the root, and no possibleInter between neighbours that would not stay neighbours.
