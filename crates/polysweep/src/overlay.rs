@@ -28,7 +28,7 @@ pub(crate) fn overlay_pair(
 ) -> Result<(MultiPolygon, Stats), Error> {
     let boxes = [input::check(0, subject)?, input::check(1, clipping)?];
     if options.fill_rule != FillRule::Structure {
-        return overlay_checked(operation, [subject, clipping], boxes, options, None);
+        return overlay_checked(operation, [subject, clipping], &boxes, options, None);
     }
     // Under the structural reading: valid operands are read alike by the even-odd rule, which a watched sweep
     // tells (see `structure`); only otherwise is each made a valid polygon set first.
@@ -40,7 +40,7 @@ pub(crate) fn overlay_pair(
         let watched = overlay_checked(
             operation,
             [subject, clipping],
-            boxes.clone(),
+            &boxes,
             &even_odd,
             Some(&mut watch),
         )?;
@@ -63,7 +63,7 @@ pub(crate) fn overlay_pair(
         })?;
     let boxes = [input::boxes(&subject), input::boxes(&clipping)];
     let (result, stats) =
-        overlay_checked(operation, [&subject, &clipping], boxes, &even_odd, None)?;
+        overlay_checked(operation, [&subject, &clipping], &boxes, &even_odd, None)?;
     let stats = Stats {
         structure_sweeps,
         ..stats
@@ -76,7 +76,7 @@ pub(crate) fn overlay_pair(
 pub(crate) fn overlay_checked(
     operation: Operation,
     [subject, clipping]: [&MultiPolygon; 2],
-    boxes: [Vec<Bounds>; 2],
+    boxes: &[Vec<Bounds>; 2],
     options: &Options,
     mut watch: Option<&mut Watch>,
 ) -> Result<(MultiPolygon, Stats), Error> {
@@ -286,7 +286,8 @@ fn sweep_once(
     sweep.watch = watch;
     sweep.run()?;
     if let Some(watch) = sweep.watch.as_deref_mut() {
-        for (alike, shared) in watch.alike.iter_mut().zip(sweep.shared_vertex) {
+        // (Noted by the initial sort, see `events::initial_events`.)
+        for (alike, shared) in watch.alike.iter_mut().zip(workspace.sort.shared_vertex) {
             *alike &= !shared;
         }
     }

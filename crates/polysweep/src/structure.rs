@@ -38,7 +38,6 @@ use crate::workspace::{self, Workspace};
 
 /// What the sweep watches for the structural reading: the rings swept, and whether each operand is read alike by
 /// the even-odd rule and by its structure, as far as the sweep has seen.
-#[derive(Default)]
 pub(crate) struct Watch {
     rings: Vec<Ring>,
     /// The ring of each input edge (an index into `rings`).
@@ -141,12 +140,11 @@ impl Sweep<'_> {
         let segment = self.event(e).segment();
         let input = self.edges[segment as usize];
         let k = input.operand as usize;
-        let Some(watch) = self.watch.as_deref() else {
+        let (around, steps) = self.ring_around(node, k);
+        let Some(watch) = self.watch.as_deref_mut() else {
             return;
         };
         let ring = watch.ring_of(segment);
-        let (around, steps) = self.ring_around(node, k);
-        let watch = self.watch.as_deref_mut().expect("read above");
         watch.steps_left -= steps;
         watch.rings[ring].inside_above = input.winding;
         let Some(around) = around else {
@@ -344,7 +342,7 @@ mod tests {
         let boxes = [input::check(0, &a).unwrap(), input::check(1, &b).unwrap()];
         let mut watch = Watch::new();
         let options = Options::default();
-        overlay_checked(operation, [&a, &b], boxes, &options, Some(&mut watch)).unwrap();
+        overlay_checked(operation, [&a, &b], &boxes, &options, Some(&mut watch)).unwrap();
         watch.alike
     }
 

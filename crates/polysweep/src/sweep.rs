@@ -105,8 +105,6 @@ pub(crate) struct Sweep<'a> {
     stopped: bool,
     /// Which of the shortcuts of [`shortcuts`] are on.
     pub shortcuts: Shortcuts,
-    /// Per operand: more than two of its endpoints at one input point (see [`initial_events`]).
-    pub shared_vertex: [bool; 2],
     /// What the structural reading's check watches, when it is on (see [`crate::structure`]).
     pub watch: Option<&'a mut Watch>,
 }
@@ -129,7 +127,6 @@ impl<'a> Sweep<'a> {
             &mut workspace.sort,
             take(&mut workspace.events),
         );
-        let shared_vertex = workspace.sort.shared_vertex;
         let queue = EventQueue::new(events.len());
         // Every vertex has two events at least (a ring vertex two, a crossing four): room for as many vertices as
         // the events have room for, and for a result edge per input edge (a union of polygons apart keeps them
@@ -157,7 +154,6 @@ impl<'a> Sweep<'a> {
             max_events: MAX_EVENTS,
             stopped: false,
             shortcuts,
-            shared_vertex,
             watch: None,
         }
     }
