@@ -22,7 +22,7 @@
 use crate::edges::{InputEdge, ResultEdge, NONE};
 use crate::exact::{Exact, SweepPoint};
 use crate::geometry::{ring_area, MultiPolygon, Point, Polygon, Ring};
-use crate::rounding::{merge_rounded, sign_survives_rounding, snap_points};
+use crate::rounding::{merge_rounded, rounding_made_vertical, sign_survives_rounding, snap_points};
 use crate::validate::Side;
 use std::cmp::Ordering;
 
@@ -185,8 +185,8 @@ fn innermost_shell_around(polygons: &[Polygon], hole: &[Point]) -> Option<usize>
 }
 
 /// Builds the output polygons from the result edges of a sweep. `below_edge` maps a left event to its result
-/// edge; `close_pairs` are the sweep's close calls as (vertex, result edge), to be snapped. Also says whether any
-/// edge was bent through a vertex (then the result has to be swept again).
+/// edge; `close_pairs` are the sweep's close calls as (vertex, result edge), to be snapped. Also says whether the
+/// result has to be swept again: where an edge was bent through a vertex, or rounding made an edge vertical.
 ///
 /// Rounding is the one inexact step. A vertex moves by at most half an ulp; where several exact vertices round to
 /// one point they become one vertex (a pinch, cut by the walk), edges that shrink to nothing are dropped, and so
@@ -199,7 +199,7 @@ pub(crate) fn connect(
     below_edge: impl Fn(u32) -> u32,
     close_pairs: &[(u32, u32)],
 ) -> (MultiPolygon, bool) {
-    let (vertex_ids, points) = merge_rounded(vertices, edges);
+    let (vertex_ids, points, x_rounded_onto_another) = merge_rounded(vertices, edges);
     // The exact vertices of each edge, before rounding merges some of them.
     let exact_ends: Vec<(u32, u32)> = edges.iter().map(|e| (e.from, e.to)).collect();
     for e in edges.iter_mut() {
@@ -233,12 +233,20 @@ pub(crate) fn connect(
             out
         })
         .collect();
-    // Each ring's edges into and out of its lowest-leftmost vertex, and its orientation there.
+    // Each ring's edges into and out of its lowest-leftmost vertex, and its orientation there. (Edge k starts at
+    // the ring's k-th written point unless snapping wrote points before it.)
     let lexicographic = |a: &Point, b: &Point| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y));
     let leftmost: Vec<(usize, usize)> = (rings.iter().zip(&written))
-        .map(|(ring, points)| {
+        .map(|(ring, written)| {
+            let start = |k: usize| {
+                if snaps.is_empty() {
+                    written[k]
+                } else {
+                    points[edges[ring[k]].from as usize]
+                }
+            };
             let k = (0..ring.len())
-                .min_by(|&i, &j| lexicographic(&points[i], &points[j]))
+                .min_by(|&i, &j| lexicographic(&start(i), &start(j)))
                 .expect("rings are not empty");
             (ring[(k + ring.len() - 1) % ring.len()], ring[k])
         })
@@ -319,5 +327,7 @@ pub(crate) fn connect(
             polygons[p].holes.push(hole);
         }
     }
-    (MultiPolygon(polygons), !snaps.is_empty())
+    let resweep = !snaps.is_empty()
+        || (x_rounded_onto_another && rounding_made_vertical(input, edges, &points));
+    (MultiPolygon(polygons), resweep)
 }

@@ -300,16 +300,23 @@ fn sweep_once(
     let rounded = stats.crossings > 0;
     let suspect = rounded && (sweep.close_call || rounding::rounding_may_matter(&sweep.vertices));
     let events = &sweep.events;
-    // Close calls to snap, as (vertex, result edge): only where rounding can move something.
+    // Close calls to snap, as (vertex, result edge): only where rounding can move something. An input vertex and
+    // an edge between input vertices are written as they are, so their exact sides hold: a bend there could only
+    // join regions that come within an ulp of each other without meeting (issue 24).
+    let is_input = |v: u32| sweep.vertices[v as usize].is_input();
     let close_pairs: Vec<(u32, u32)> = if rounded && pass.may_snap {
         (sweep.close_pairs.iter())
             .map(|&(v, l)| (v, events[l as usize].result_edge()))
             .filter(|&(_, r)| r != NONE)
+            .filter(|&(v, r)| {
+                let e = &sweep.result[r as usize];
+                !(is_input(v) && is_input(e.from) && is_input(e.to))
+            })
             .collect()
     } else {
         Vec::new()
     };
-    let (result, snapped) = connect::connect(
+    let (result, resweep) = connect::connect(
         &sweep.exact,
         edges,
         &sweep.vertices,
@@ -318,7 +325,7 @@ fn sweep_once(
         &close_pairs,
     );
     sweep.give_back(workspace);
-    Ok((result, stats, suspect || snapped))
+    Ok((result, stats, suspect || resweep))
 }
 
 /// What an operation did, for display and benchmarks.

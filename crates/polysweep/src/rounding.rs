@@ -133,11 +133,12 @@ const LONG_RANGE: usize = 64;
 
 /// Output vertex of each sweep vertex on a result edge: its coordinates rounded to f64, where distinct exact points
 /// that round to the same floats become one vertex. Vertices on no result edge (most of them, when little of the
-/// input is kept) are left out, so that the ring walk's tables are only as large as the result.
+/// input is kept) are left out, so that the ring walk's tables are only as large as the result. Also says whether
+/// two of them round to one x, one of them from a crossing whose x is not a float (see [`rounding_made_vertical`]).
 pub(crate) fn merge_rounded(
     vertices: &[SweepPoint],
     edges: &[ResultEdge],
-) -> (Vec<u32>, Vec<Point>) {
+) -> (Vec<u32>, Vec<Point>, bool) {
     // `NONE` for a vertex on no result edge; the others are marked (0) here and numbered below.
     let mut ids: Vec<u32> = vec![NONE; vertices.len()];
     for e in edges {
@@ -156,6 +157,7 @@ pub(crate) fn merge_rounded(
     let mut in_crossing_blocks: HashMap<[u64; 2], u32, foldhash::fast::FixedState> =
         HashMap::default();
     let key = |p: [f64; 2]| p.map(|v| (v + 0.0).to_bits()); // -0 as 0
+    let mut x_rounded_onto_another = false;
     for (i, v) in vertices.iter().enumerate() {
         if ids[i] == NONE {
             continue;
@@ -188,9 +190,29 @@ pub(crate) fn merge_rounded(
         block.push(i);
         if block_has_rounded_x {
             in_crossing_blocks.insert(key(v.approx), id);
+            x_rounded_onto_another |= block.len() > 1;
         }
     }
-    (ids, points)
+    (ids, points, x_rounded_onto_another)
+}
+
+/// Did rounding make a result edge vertical? The sweep meets the points of one x in y order, so an edge narrower
+/// than an ulp leaves S before the points above its right end at that x are met (or enters it after those below
+/// its left end): the vertices it passes within an ulp of there are no close calls of the sweep. Once vertical, it
+/// can run along their edges, or through them. Exactly, such an edge is not vertical: it lies on a line that is not.
+///
+/// Its ends round to one x, and one of them is a crossing whose x is not a float: asked only where
+/// [`merge_rounded`] found two such vertices (on Table 1's data, never).
+pub(crate) fn rounding_made_vertical(
+    input: &[InputEdge],
+    edges: &[ResultEdge],
+    points: &[Point],
+) -> bool {
+    edges.iter().any(|e| {
+        e.from != e.to
+            && points[e.from as usize].x == points[e.to as usize].x
+            && !input[e.segment as usize].line.is_vertical()
+    })
 }
 
 /// Snap rounding of the close calls (Hobby's hot pixels): a result edge that passes through the rounding cell of a
@@ -316,7 +338,7 @@ mod tests {
                 below: NONE,
             })
             .collect();
-        let (ids, points) = merge_rounded(&vertices, &edges);
+        let (ids, points, _) = merge_rounded(&vertices, &edges);
         for (a, b) in pairs {
             assert_eq!(ids[a], ids[b]);
         }

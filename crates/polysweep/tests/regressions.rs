@@ -1,7 +1,8 @@
 //! Cases found by review, each with its expectation worked out by hand.
 
 use polysweep::{
-    difference, intersection, overlay_with_stats, union, xor_all, MultiPolygon, Operation, Options,
+    difference, intersection, overlay, overlay_with_stats, union, union_all, xor_all, FillRule,
+    MultiPolygon, Operation, Options,
 };
 
 /// Intersection and difference skip polygons outside the box where the result can lie. A hole ring may reach
@@ -249,4 +250,76 @@ fn rounding_a_cluster_of_crossings_leaves_no_edges_crossing() {
     let result = union(&a, &b).unwrap();
     assert_eq!(polysweep::validate(&result), Ok(()));
     assert!((result.area() - 0.145_545_618_597_089_2).abs() < 1e-12);
+}
+
+/// Issue 24: three triangles fanned around the origin. W2's vertex (-3.05317, -2.584212) lies 7e-17 rad off W3's
+/// edge from the origin to (-4.579755, -3.876318), exactly on W2's side, so W3 meets W1 and W2 only at the origin.
+/// W2's vertex (-4.90762, 3.45185) lies inside W1, so the final sweep constructs a crossing and rounds; it snapped
+/// the close call, bending W3's edge through W2's vertex, and the union came out as one polygon. Expected: two
+/// polygons, W1 ∪ W2 and W3, of area 53.12985622384823 (in rationals from the floats given: the pentagon of W1 ∪ W2
+/// through the crossing, plus W3).
+#[test]
+fn a_close_call_between_input_vertices_is_not_snapped() {
+    let triangle = |points: [[f64; 2]; 3]| {
+        MultiPolygon::from_coordinates(&[vec![vec![points[0], points[1], points[2], points[0]]]])
+    };
+    let w1 = triangle([[0.0, 0.0], [-0.491463, 7.98489], [-6.543493, 4.602466]]);
+    let w2 = triangle([[0.0, 0.0], [-4.90762, 3.45185], [-3.05317, -2.584212]]);
+    let w3 = triangle([[0.0, 0.0], [-4.579755, -3.876318], [1.743494, -5.7411]]);
+    let result = union_all(&[w1, w2, w3]).unwrap();
+    assert_eq!(polysweep::validate(&result), Ok(()));
+    assert_eq!(result.0.len(), 2);
+    assert!((result.area() - 53.129_856_223_848_23).abs() < 1e-12);
+}
+
+/// Issue 24: a ring whose last two edges run down x = -0.24999999999999745 from an ulp to its left, to
+/// (-0.25, -4.25), and back up it to (-0.25, -0.25). The first edge crosses another 1e-17 left of the line, and that
+/// crossing rounds onto it: the edge from it down to (-0.25, -4.25) became vertical and ran back along the other, a
+/// spike. The sweep noted no close call there: the edge passes 3e-18 from (-0.25, -0.25) but leaves the sweep line
+/// at its lower end, before that point is met at the same x. Expected: two triangles, of area 87.59275793650794
+/// (in rationals from the floats given).
+#[test]
+fn an_edge_that_rounding_makes_vertical_is_swept_again() {
+    let ring = MultiPolygon::from_coordinates(&[vec![vec![
+        [-0.24999999999999745, -0.24999999999999747],
+        [11.500000000000002, -1.2499999999999976],
+        [-4.249999999999998, 10.500000000000002],
+        [-0.24999999999999747, 28.500000000000004],
+        [-0.24999999999999745, -4.249999999999998],
+    ]]]);
+    for fill_rule in [FillRule::EvenOdd, FillRule::NonZero] {
+        let options = Options::default().with_fill_rule(fill_rule);
+        let result = overlay(Operation::Union, &ring, &MultiPolygon::default(), &options).unwrap();
+        assert_eq!(polysweep::validate(&result), Ok(()), "{fill_rule:?}");
+        assert_eq!(result.0.len(), 2, "{fill_rule:?}");
+        assert!((result.area() - 87.592_757_936_507_94).abs() < 1e-12);
+    }
+}
+
+/// Found by the decimal-grid property test with another seed: the union of A ∪ B (two triangles that touch) with C
+/// (three rings, one crossing itself) has a hole whose ring had a point inserted by snapping. The ring's
+/// lowest-leftmost vertex was looked for among its written points by edge index, which that point shifts: the
+/// edges found there were not the ones at that vertex, and the edge below them was the hole's own, so the hole was
+/// placed by testing its vertices, the first off the shell's boundary an ulp outside it. The hole was dropped, and
+/// the union filled it. Expected: area 0.22168925142942347 (the union integrated exactly in rationals, slab by slab).
+#[test]
+fn a_hole_with_snapped_points_finds_its_shell() {
+    let grid = |rings: &[&[(i32, i32)]]| {
+        let ring = |r: &[(i32, i32)]| -> Vec<[f64; 2]> {
+            r.iter()
+                .map(|&(x, y)| [x as f64 * 0.1, y as f64 * 0.1])
+                .collect()
+        };
+        MultiPolygon::from_coordinates(&rings.iter().map(|r| vec![ring(r)]).collect::<Vec<_>>())
+    };
+    let a = grid(&[&[(7, 6), (4, 3), (0, 0), (3, 2)]]);
+    let b = grid(&[&[(3, 6), (0, 0), (0, 6)]]);
+    let c = grid(&[
+        &[(0, 1), (1, 0), (0, 0)],
+        &[(0, 3), (8, 6), (1, 2), (3, 0), (8, 7)],
+        &[(5, 4), (6, 5), (5, 0)],
+    ]);
+    let result = union(&union(&a, &b).unwrap(), &c).unwrap();
+    assert_eq!(polysweep::validate(&result), Ok(()));
+    assert!((result.area() - 0.221_689_251_429_423_47).abs() < 1e-12);
 }
