@@ -333,3 +333,33 @@ test('1,000 generated flat calls, one bad thing each', () => {
     check(`flat ${i}`, () => overlayFlat(pick(Object.keys(OPERATIONS)), operands, pick([undefined, { fillRule: pick(GOOD_FILL_RULES) }])), expect);
   }
 });
+
+// Running out of memory (issue 24): 1,000 × 1,000 crossing bars need about 1 GiB; in a Node limited to 256 MiB of
+// wasm memory (`--wasm-max-mem-pages`, standing in for wasm32's 4 GiB) the operation fails with a RangeError that
+// says so and gives the sizes, and the module answers the next call.
+test('running out of memory is a named error, and the module keeps working', async () => {
+  const { spawnSync } = await import('node:child_process');
+  const script = `
+    import { intersection, union } from ${JSON.stringify(new URL('../../pkg/polysweep.node.js', import.meta.url).href)};
+    const n = 1000, length = 2 * n;
+    const bars = (vertical) => Array.from({ length: n }, (_, i) => {
+      const ring = [[0, 2 * i], [length, 2 * i], [length, 2 * i + 1], [0, 2 * i + 1], [0, 2 * i]];
+      return [vertical ? ring.map(([a, b]) => [b, a]) : ring];
+    });
+    let failure = null;
+    try { intersection(bars(false), bars(true)); } catch (error) { failure = { name: error.constructor.name, message: error.message }; }
+    const after = union([[[0, 0], [1, 0], [1, 1], [0, 1]]], [[[1, 0], [2, 0], [2, 1], [1, 1]]]);
+    console.log(JSON.stringify({ failure, after }));
+  `;
+  const child = spawnSync(process.execPath, ['--wasm-max-mem-pages=4096', '--input-type=module', '-e', script], {
+    encoding: 'utf8',
+  });
+  assert.equal(child.status, 0, child.stderr);
+  const { failure, after } = JSON.parse(child.stdout);
+  assert.equal(failure?.name, 'RangeError', JSON.stringify(failure));
+  assert.match(failure.message, /^out of memory: the operation on 8000 edges ran out of memory with \d+ crossings found$/);
+  assert.doesNotMatch(failure.message, ENGINE_MESSAGE);
+  assertMultiPolygon(after);
+  assert.equal(after.length, 1);
+  assert.equal(area(after), 2);
+});

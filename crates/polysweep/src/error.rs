@@ -36,6 +36,9 @@ pub enum Error {
     /// The sweep would need more than `limit` events (two per input edge, four more per crossing): more than one
     /// sweep can name with its 32-bit indices. No vertex is to blame; it takes about 100 GB of memory to get here.
     TooLarge { limit: usize },
+    /// The operation needed more memory than it could get (in wasm32, more than its 4 GiB), with `edges` input
+    /// edges and `crossings` found when it ran out. The library stays usable.
+    OutOfMemory { edges: usize, crossings: usize },
 }
 
 impl Error {
@@ -45,7 +48,7 @@ impl Error {
             Error::NonFiniteCoordinate { at, .. } | Error::CoordinateOutOfRange { at, .. } => {
                 Some(*at)
             }
-            Error::TooLarge { .. } => None,
+            Error::TooLarge { .. } | Error::OutOfMemory { .. } => None,
         }
     }
 }
@@ -66,6 +69,10 @@ impl fmt::Display for Error {
                 f,
                 "the operation needs more than {limit} sweep events (two per edge, four more per crossing), the most \
                  one sweep can hold"
+            ),
+            Error::OutOfMemory { edges, crossings } => write!(
+                f,
+                "out of memory: the operation on {edges} edges ran out of memory with {crossings} crossings found"
             ),
         }
     }

@@ -257,6 +257,11 @@ impl Exact {
     }
 
     /// How many crossing points were constructed.
+    /// Room for `more` crossings without allocating (see [`crate::workspace::room`]).
+    pub fn room(&mut self, more: usize) -> bool {
+        crate::workspace::room(&mut self.crossings, more)
+    }
+
     pub fn crossing_count(&self) -> usize {
         self.crossings.len()
     }

@@ -44,6 +44,11 @@ impl<K> Default for Status<K> {
 }
 
 impl<K: Copy> Status<K> {
+    /// Room for `more` nodes without allocating (see [`crate::workspace::room`]).
+    pub fn room(&mut self, more: usize) -> bool {
+        crate::workspace::room(&mut self.nodes, more)
+    }
+
     pub fn event(&self, node: u32) -> EventId {
         self.nodes[node as usize].event
     }

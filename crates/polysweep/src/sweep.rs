@@ -43,7 +43,7 @@ use crate::exact::{Exact, Line, SweepPoint};
 use crate::options::Shortcuts;
 use crate::select::{Flags, Selection};
 use crate::structure::Watch;
-use crate::workspace::{take, Workspace};
+use crate::workspace::{room, take, Workspace};
 
 mod close_calls;
 mod shortcuts;
@@ -101,8 +101,8 @@ pub(crate) struct Sweep<'a> {
     /// The most events this sweep may make: [`MAX_EVENTS`], within which every index fits its 32 bits (smaller in
     /// tests). A split that would pass it stops the sweep with [`Error::TooLarge`] (see `room_for_events`).
     pub max_events: usize,
-    /// A split found no room under `max_events`: Q has been emptied and stays empty.
-    stopped: bool,
+    /// Why a split found no room (under `max_events`, or in memory): Q has been emptied and stays empty.
+    stopped: Option<Error>,
     /// Which of the shortcuts of [`shortcuts`] are on.
     pub shortcuts: Shortcuts,
     /// What the structural reading's check watches, when it is on (see [`crate::structure`]).
@@ -152,7 +152,7 @@ impl<'a> Sweep<'a> {
             close_pairs: Vec::new(),
             widest_clearance: crate::rounding::clearance(magnitude),
             max_events: MAX_EVENTS,
-            stopped: false,
+            stopped: None,
             shortcuts,
             watch: None,
         }
@@ -194,7 +194,7 @@ impl<'a> Sweep<'a> {
     }
 
     fn push_with(&mut self, e: EventId, partner: EventId) {
-        if self.stopped {
+        if self.stopped.is_some() {
             return;
         }
         self.queue
@@ -243,22 +243,41 @@ impl<'a> Sweep<'a> {
                 self.process_right(e);
             }
         }
-        if self.stopped {
-            return Err(Error::TooLarge {
-                limit: self.max_events,
-            });
+        match self.stopped.take() {
+            Some(error) => Err(error),
+            None => Ok(()),
         }
-        Ok(())
     }
 
     /// Can a split add `count` more events? If not, the sweep stops: Q is emptied and nothing more is put in it, so
     /// the loop ends once the event at hand is done (the status left as it is, and no result made).
+    ///
+    /// Memory is reserved here for everything a split adds (events, their entries in Q and nodes in S, the
+    /// crossing, its vertex, result edges), so that running out of it ends the sweep with [`Error::OutOfMemory`]
+    /// where the allocator says so (wasm32's 4 GiB), rather than aborting in a push.
     pub fn room_for_events(&mut self, count: usize) -> bool {
-        if self.events.len() + count > self.max_events {
-            self.stopped = true;
-            self.queue.clear();
+        if self.stopped.is_none() {
+            if self.events.len() + count > self.max_events {
+                self.stopped = Some(Error::TooLarge {
+                    limit: self.max_events,
+                });
+            } else if !(room(&mut self.events, count)
+                && self.queue.room(count)
+                && self.status.room(count)
+                && self.exact.room(1)
+                && room(&mut self.vertices, count)
+                && room(&mut self.result, count))
+            {
+                self.stopped = Some(Error::OutOfMemory {
+                    edges: self.edges.len(),
+                    crossings: self.exact.crossing_count(),
+                });
+            }
+            if self.stopped.is_some() {
+                self.queue.clear();
+            }
         }
-        !self.stopped
+        self.stopped.is_none()
     }
 
     /// Events come in point order, so equal points are consecutive and share one output vertex.

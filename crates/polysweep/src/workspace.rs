@@ -73,6 +73,12 @@ pub(crate) fn with<R>(keep: bool, operation: impl FnOnce(&mut Workspace) -> R) -
     outcome
 }
 
+/// Is there room for `more` elements in `v`? It grows as a push would (doubling), but says so where the allocator
+/// has no memory left, where a push would abort the process (or trap, in wasm).
+pub(crate) fn room<T>(v: &mut Vec<T>, more: usize) -> bool {
+    v.capacity() - v.len() >= more || v.try_reserve(more).is_ok()
+}
+
 /// Frees the memory this thread keeps between operations (see the crate's documentation, *Memory*). The next
 /// operation allocates anew.
 pub fn free_working_memory() {
