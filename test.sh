@@ -3,7 +3,8 @@
 # needs first (the wasm target, wasm-bindgen-cli 0.2.130, the npm devDependencies, Debian's Chromium), then checks
 # formatting and clippy's lints, runs the core's unit, fixture, property and Table 1 tests (and the geo-types
 # feature's), the playground's native tests and the doc examples, builds the npm package and the playground for the
-# browser, and runs the package's Node, TypeScript and browser tests and the playground's browser test.
+# browser, and runs the package's Node, TypeScript and browser tests and the playground's browser test, then a
+# bounded fuzz run of the core.
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -38,3 +39,10 @@ web/build.sh
 web/build-playground.sh
 node --test web/test/*.test.mjs
 npx --no-install tsc -p web/tsconfig.json
+
+# --- near-degenerate input: a bounded coverage-guided fuzz run of the core (docs/robustness.md) ---
+if ! cargo fuzz --version 2>/dev/null | grep -q '0\.13\.2'; then
+  cargo install cargo-fuzz --version 0.13.2
+fi
+# cargo-fuzz passes nightly-only flags (the address sanitizer): RUSTC_BOOTSTRAP lets the stable toolchain take them.
+(cd fuzz && cargo fmt -- --check && RUSTC_BOOTSTRAP=1 cargo fuzz run -O overlay -- -max_total_time=60 -seed=20091)
