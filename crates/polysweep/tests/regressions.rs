@@ -323,3 +323,28 @@ fn a_hole_with_snapped_points_finds_its_shell() {
     assert_eq!(polysweep::validate(&result), Ok(()));
     assert!((result.area() - 0.221_689_251_429_423_47).abs() < 1e-12);
 }
+
+/// Issue 24, found by the differential test (tests/differential, seed 20091, case 148): B's vertex
+/// (-1.2002201991730366e-06, 0.0261872278596968) lies within 1e-18 of A's lower edge, and B's two edges cross that
+/// edge a few ulps from it. Snapping the close call bent an edge through a crossing's rounded point, and the xor
+/// came out as one polygon with a hole. Written without the bend the result is valid, and has the exact topology:
+/// two polygons, no hole, of area 2.9342839989984237 (the exact reference, `exact.py`, in rationals).
+#[test]
+fn a_bend_is_left_out_where_the_result_is_valid_without_it() {
+    let a = MultiPolygon::from_coordinates(&[vec![vec![
+        [-1.0, -0.1007313058064152],
+        [1.0, 0.15310606618654998],
+        [1.116240068529813, 1.5],
+        [-0.9679151014053681, 1.5],
+    ]]]);
+    let b = MultiPolygon::from_coordinates(&[vec![vec![
+        [-0.9424646166933064, -0.7454047433698368],
+        [-1.2002201991730366e-06, 0.0261872278596968],
+        [-0.8360882769044637, 0.7194599399211659],
+    ]]]);
+    let result = polysweep::xor(&a, &b).unwrap();
+    assert_eq!(polysweep::validate(&result), Ok(()));
+    assert_eq!(result.0.len(), 2);
+    assert!(result.0.iter().all(|p| p.holes.is_empty()));
+    assert!((result.area() - 2.934_283_998_998_423_7).abs() < 1e-12);
+}
