@@ -3,8 +3,9 @@
 # needs first (the wasm target, wasm-bindgen-cli 0.2.130, the npm devDependencies, Debian's Chromium), then checks
 # formatting and clippy's lints, runs the core's unit, fixture, property and Table 1 tests (and the geo-types
 # feature's), the playground's native tests and the doc examples, builds the npm package and the playground for the
-# browser, and runs the package's Node, TypeScript and browser tests and the playground's browser test, then a
-# bounded fuzz run of the core.
+# browser, and runs the package's Node, TypeScript and browser tests and the playground's browser test, the
+# package's differential test against GEOS and an exact reference (tests/differential), and a bounded fuzz run of
+# the core.
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -39,6 +40,17 @@ web/build.sh
 web/build-playground.sh
 node --test web/test/*.test.mjs
 npx --no-install tsc -p web/tsconfig.json
+
+# --- the built package against GEOS (shapely, in a venv of its own) and an exact rational reference ---
+if [ ! -x .venv/bin/python ]; then
+  python3 -m venv .venv || {
+    sudo=""; [ "$(id -u)" -ne 0 ] && sudo=sudo
+    $sudo apt-get install -y -qq python3-venv && python3 -m venv .venv
+  }
+fi
+.venv/bin/python -c 'import shapely, sys; sys.exit(shapely.__version__ != "2.2.0")' 2>/dev/null \
+  || .venv/bin/pip install --quiet shapely==2.2.0
+.venv/bin/python tests/differential/run.py
 
 # --- near-degenerate input: a bounded coverage-guided fuzz run of the core (docs/robustness.md) ---
 if ! cargo fuzz --version 2>/dev/null | grep -q '0\.13\.2'; then
