@@ -53,13 +53,13 @@ fn run(args: &[String]) -> Result<(), String> {
         .map_err(|e| e.to_string())?;
     let elapsed = start.elapsed();
     eprintln!(
-        "{op}: {} + {} vertices in, {} out, {} polygons, {} crossings, {} repair passes, area {:.6}, {:.2} ms",
+        "{op}: {} + {} vertices in, {} out, {} polygons, {} crossings, {} snap-rounding sweeps, area {:.6}, {:.2} ms",
         subject.vertex_count(),
         clipping.vertex_count(),
         result.vertex_count(),
         result.0.len(),
         stats.crossings,
-        stats.repair_passes,
+        stats.snap_rounding_sweeps,
         result.area(),
         elapsed.as_secs_f64() * 1e3
     );

@@ -22,8 +22,8 @@
 use crate::edges::{InputEdge, ResultEdge, NONE};
 use crate::exact::{Exact, SweepPoint};
 use crate::geometry::{ring_area, MultiPolygon, Point, Polygon, Ring};
-use crate::rounding::{merge_rounded, rounding_made_vertical, sign_survives_rounding, snap_points};
-use crate::validate::{validate, Side};
+use crate::rounding::{merge_rounded, rounding_made_vertical, sign_survives_rounding};
+use crate::validate::Side;
 use std::cmp::Ordering;
 
 /// The exact predicates, and the input edges whose lines the result edges lie on.
@@ -185,8 +185,7 @@ fn innermost_shell_around(polygons: &[Polygon], hole: &[Point]) -> Option<usize>
 }
 
 /// Builds the output polygons from the result edges of a sweep. `below_edge` maps a left event to its result
-/// edge; `close_pairs` are the sweep's close calls as (vertex, result edge), to be snapped. Also says whether the
-/// result has to be swept again: where an edge was bent through a vertex, or rounding made an edge vertical.
+/// edge. Also says whether rounding made an edge vertical (see [`rounding_made_vertical`]).
 ///
 /// Rounding is the one inexact step. A vertex moves by at most half an ulp; where several exact vertices round to
 /// one point they become one vertex (a pinch, cut by the walk), edges that shrink to nothing are dropped, and so
@@ -197,7 +196,6 @@ pub(crate) fn connect(
     vertices: &[SweepPoint],
     edges: &mut [ResultEdge],
     below_edge: impl Fn(u32) -> u32,
-    close_pairs: &[(u32, u32)],
 ) -> (MultiPolygon, bool) {
     let (vertex_ids, points, x_rounded_onto_another) = merge_rounded(vertices, edges);
     // The exact vertices of each edge, before rounding merges some of them.
@@ -206,7 +204,6 @@ pub(crate) fn connect(
         e.from = vertex_ids[e.from as usize];
         e.to = vertex_ids[e.to as usize];
     }
-    let snaps = snap_points(input, edges, &vertex_ids, &points, close_pairs);
     let lines = Lines { exact, input };
     let rings = walk_rings(lines, points.len(), edges);
     let mut ring_of_edge = vec![NONE; edges.len()];
@@ -215,132 +212,105 @@ pub(crate) fn connect(
             ring_of_edge[e] = r as u32;
         }
     }
-    let edges: &[ResultEdge] = edges;
-    // The polygons, with the points of `snaps` written into their edges.
-    let assemble = |snaps: &[(u32, Point)]| -> MultiPolygon {
-        // Each ring as it is written out: its rounded vertices, closed (the first repeated last). Made once, and read
-        // below instead of the edges, which lie scattered in memory.
-        let mut written: Vec<Ring> = rings
-            .iter()
-            .map(|ring| {
-                let mut out: Ring = Vec::with_capacity(ring.len() + 1);
-                for &e in ring {
-                    out.push(points[edges[e].from as usize]);
-                    if !snaps.is_empty() {
-                        let from = snaps.partition_point(|&(s, _)| (s as usize) < e);
-                        let to = snaps.partition_point(|&(s, _)| (s as usize) <= e);
-                        out.extend(snaps[from..to].iter().map(|&(_, p)| p));
-                    }
-                }
-                out.push(out[0]);
-                out
-            })
-            .collect();
-        // Each ring's edges into and out of its lowest-leftmost vertex, and its orientation there. (Edge k starts at
-        // the ring's k-th written point unless snapping wrote points before it.)
-        let lexicographic = |a: &Point, b: &Point| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y));
-        let leftmost: Vec<(usize, usize)> = (rings.iter().zip(&written))
-            .map(|(ring, written)| {
-                let start = |k: usize| {
-                    if snaps.is_empty() {
-                        written[k]
-                    } else {
-                        points[edges[ring[k]].from as usize]
-                    }
-                };
-                let k = (0..ring.len())
-                    .min_by(|&i, &j| lexicographic(&start(i), &start(j)))
-                    .expect("rings are not empty");
-                (ring[(k + ring.len() - 1) % ring.len()], ring[k])
-            })
-            .collect();
-        // Orientation of the rounded ring (its signed area). Where rounding could have flipped it (a ring thin enough),
-        // it is checked exactly at the ring's first exact vertex in sweep order (exact vertex ids follow the sweep;
-        // rounding can merge a later exact vertex into an earlier one, so the rounded vertices' order is not the exact
-        // one): the turn at an extreme vertex of a closed ring is its orientation. A ring whose rounded copy has no
-        // area, or the opposite orientation, is a sliver thinner than rounding: it is dropped (`Equal`).
-        let turn: Vec<Ordering> = (rings.iter().zip(&written))
-            .map(|(ring, rounded)| {
-                let area = ring_area(rounded);
-                let rounded_turn = area.partial_cmp(&0.0).unwrap_or(Ordering::Equal);
-                if sign_survives_rounding(rounded, area) {
-                    return rounded_turn;
-                }
-                let k = (0..ring.len())
-                    .min_by_key(|&k| exact_ends[ring[k]].0)
-                    .expect("rings are not empty");
-                let (incoming, outgoing) = (ring[(k + ring.len() - 1) % ring.len()], ring[k]);
-                let exact_turn = lines.cross(&edges[incoming], &edges[outgoing]);
-                // Where rounding merged vertices, the two edges need not meet at one exact point (an edge that shrank
-                // to nothing was between them, and they can even run back along each other), or the ring can pass
-                // straight through: then the turn says nothing and only the rounded orientation tells.
-                let meet_exactly = exact_ends[incoming].1 == exact_ends[outgoing].0;
-                if !meet_exactly || exact_turn == Ordering::Equal || exact_turn == rounded_turn {
-                    rounded_turn
-                } else {
-                    Ordering::Equal
-                }
-            })
-            .collect();
-        let is_shell = |r: u32| turn[r as usize] == Ordering::Greater;
-        // The ring of the result edge below ring `r`'s lowest edge at its leftmost vertex (asked for holes only, so
-        // the edge below is looked up only for them).
-        let ring_below = |r: u32| {
-            let (i, o) = leftmost[r as usize];
-            [edges[i].below, edges[o].below]
-                .into_iter()
-                .filter(|&b| b != NONE)
-                .map(&below_edge)
-                .filter(|&b| b != NONE) // an edge the sweep stopped before recording
-                .map(|b| ring_of_edge[b as usize])
-                .find(|&b| b != NONE && b != r)
-        };
-        let mut polygon_of_ring = vec![NONE; rings.len()];
-        let mut polygons: Vec<Polygon> = Vec::with_capacity(rings.len());
-        for (r, ring) in rings.iter().enumerate() {
-            if is_shell(r as u32) && ring.len() >= 3 {
-                polygon_of_ring[r] = polygons.len() as u32;
-                polygons.push(Polygon {
-                    exterior: std::mem::take(&mut written[r]),
-                    holes: Vec::new(),
-                });
+    // Each ring as it is written out: its rounded vertices, closed (the first repeated last). Made once, and read
+    // below instead of the edges, which lie scattered in memory.
+    let mut written: Vec<Ring> = rings
+        .iter()
+        .map(|ring| {
+            let mut out: Ring = Vec::with_capacity(ring.len() + 1);
+            for &e in ring {
+                out.push(points[edges[e].from as usize]);
             }
-        }
-        for (r, ring) in rings.iter().enumerate() {
-            if turn[r] != Ordering::Less || ring.len() < 3 {
-                continue; // a shell, or a ring that rounding flattened
+            out.push(out[0]);
+            out
+        })
+        .collect();
+    // Each ring's edges into and out of its lowest-leftmost vertex, and its orientation there.
+    let lexicographic = |a: &Point, b: &Point| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y));
+    let leftmost: Vec<(usize, usize)> = (rings.iter().zip(&written))
+        .map(|(ring, points)| {
+            let k = (0..ring.len())
+                .min_by(|&i, &j| lexicographic(&points[i], &points[j]))
+                .expect("rings are not empty");
+            (ring[(k + ring.len() - 1) % ring.len()], ring[k])
+        })
+        .collect();
+    // Orientation of the rounded ring (its signed area). Where rounding could have flipped it (a ring thin enough),
+    // it is checked exactly at the ring's first exact vertex in sweep order (exact vertex ids follow the sweep;
+    // rounding can merge a later exact vertex into an earlier one, so the rounded vertices' order is not the exact
+    // one): the turn at an extreme vertex of a closed ring is its orientation. A ring whose rounded copy has no
+    // area, or the opposite orientation, is a sliver thinner than rounding: it is dropped (`Equal`).
+    let turn: Vec<Ordering> = (rings.iter().zip(&written))
+        .map(|(ring, rounded)| {
+            let area = ring_area(rounded);
+            let rounded_turn = area.partial_cmp(&0.0).unwrap_or(Ordering::Equal);
+            if sign_survives_rounding(rounded, area) {
+                return rounded_turn;
             }
-            // Walk down through holes to a shell; at most one step per ring, so this always ends.
-            let mut owner = ring_below(r as u32);
-            for _ in 0..rings.len() {
-                match owner {
-                    Some(o) if !is_shell(o) => owner = ring_below(o),
-                    _ => break,
-                }
+            let k = (0..ring.len())
+                .min_by_key(|&k| exact_ends[ring[k]].0)
+                .expect("rings are not empty");
+            let (incoming, outgoing) = (ring[(k + ring.len() - 1) % ring.len()], ring[k]);
+            let exact_turn = lines.cross(&edges[incoming], &edges[outgoing]);
+            // Where rounding merged vertices, the two edges need not meet at one exact point (an edge that shrank
+            // to nothing was between them, and they can even run back along each other), or the ring can pass
+            // straight through: then the turn says nothing and only the rounded orientation tells.
+            let meet_exactly = exact_ends[incoming].1 == exact_ends[outgoing].0;
+            if !meet_exactly || exact_turn == Ordering::Equal || exact_turn == rounded_turn {
+                rounded_turn
+            } else {
+                Ordering::Equal
             }
-            let hole = std::mem::take(&mut written[r]);
-            let polygon =
-                match owner.filter(|&o| is_shell(o) && polygon_of_ring[o as usize] != NONE) {
-                    Some(shell) => Some(polygon_of_ring[shell as usize] as usize),
-                    // The edge below was one that rounding shrank to a point: find the shell by position instead.
-                    None => innermost_shell_around(&polygons, &hole),
-                };
-            // No shell around a hole happens only where rounding inverted a sliver next to it (docs/robustness.md,
-            // known limit); the strict tests check membership, so a hole lost otherwise would not go unnoticed.
-            if let Some(p) = polygon {
-                polygons[p].holes.push(hole);
-            }
-        }
-        MultiPolygon(polygons)
+        })
+        .collect();
+    let is_shell = |r: u32| turn[r as usize] == Ordering::Greater;
+    // The ring of the result edge below ring `r`'s lowest edge at its leftmost vertex (asked for holes only, so
+    // the edge below is looked up only for them).
+    let ring_below = |r: u32| {
+        let (i, o) = leftmost[r as usize];
+        [edges[i].below, edges[o].below]
+            .into_iter()
+            .filter(|&b| b != NONE)
+            .map(&below_edge)
+            .filter(|&b| b != NONE) // an edge the sweep stopped before recording
+            .map(|b| ring_of_edge[b as usize])
+            .find(|&b| b != NONE && b != r)
     };
-    let made_vertical = x_rounded_onto_another && rounding_made_vertical(input, edges, &points);
-    // A bend carries an edge onto a vertex that lies, exactly, off it (issue 24): where the result is valid
-    // without it, it is written without, with the exact topology.
-    if !snaps.is_empty() {
-        let plain = assemble(&[]);
-        if validate(&plain).is_ok() {
-            return (plain, made_vertical);
+    let mut polygon_of_ring = vec![NONE; rings.len()];
+    let mut polygons: Vec<Polygon> = Vec::with_capacity(rings.len());
+    for (r, ring) in rings.iter().enumerate() {
+        if is_shell(r as u32) && ring.len() >= 3 {
+            polygon_of_ring[r] = polygons.len() as u32;
+            polygons.push(Polygon {
+                exterior: std::mem::take(&mut written[r]),
+                holes: Vec::new(),
+            });
         }
     }
-    (assemble(&snaps), !snaps.is_empty() || made_vertical)
+    for (r, ring) in rings.iter().enumerate() {
+        if turn[r] != Ordering::Less || ring.len() < 3 {
+            continue; // a shell, or a ring that rounding flattened
+        }
+        // Walk down through holes to a shell; at most one step per ring, so this always ends.
+        let mut owner = ring_below(r as u32);
+        for _ in 0..rings.len() {
+            match owner {
+                Some(o) if !is_shell(o) => owner = ring_below(o),
+                _ => break,
+            }
+        }
+        let hole = std::mem::take(&mut written[r]);
+        let polygon = match owner.filter(|&o| is_shell(o) && polygon_of_ring[o as usize] != NONE) {
+            Some(shell) => Some(polygon_of_ring[shell as usize] as usize),
+            // The edge below was one that rounding shrank to a point: find the shell by position instead.
+            None => innermost_shell_around(&polygons, &hole),
+        };
+        // No shell around a hole happens only where rounding inverted a sliver next to it (docs/robustness.md,
+        // known limit); the strict tests check membership, so a hole lost otherwise would not go unnoticed.
+        if let Some(p) = polygon {
+            polygons[p].holes.push(hole);
+        }
+    }
+    let made_vertical = x_rounded_onto_another && rounding_made_vertical(input, edges, &points);
+    (MultiPolygon(polygons), made_vertical)
 }

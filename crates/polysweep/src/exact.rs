@@ -239,6 +239,18 @@ impl Exact {
         })
     }
 
+    /// The side of the point ((x0 + x1) / 2, (y0 + y1) / 2) with respect to `line`, as [`Self::orient`] gives it:
+    /// for the corners of a float's rounding cell, which lie halfway between floats (see [`crate::snap_round`]).
+    /// Exact, without a filter: it is asked only where a result is snap-rounded.
+    pub fn orient_midpoint(&self, line: &Line, x: [f64; 2], y: [f64; 2]) -> Ordering {
+        let d = |v: f64| Dyadic::from_f64(v);
+        let [ax, ay] = line.a.map(d);
+        let (dx, dy) = (&d(line.b[0]) - &ax, &d(line.b[1]) - &ay);
+        // Twice the point's offset from `a`, so that the midpoint needs no division.
+        let twice = |[u, v]: [f64; 2], a: &Dyadic| &(&d(u) + &d(v)) - &(a + a);
+        (&(&dx * &twice(y, &ay)) - &(&dy * &twice(x, &ax))).sign()
+    }
+
     /// The point where the lines of `l` and `m` cross. The caller has established that they are not parallel.
     /// Its coordinates are rounded by float arithmetic where that is proven right (see [`estimate`]), else from
     /// the exact ones, which are then kept.

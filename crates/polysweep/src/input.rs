@@ -190,20 +190,30 @@ pub(crate) fn add_ring_edges(edges: &mut Vec<InputEdge>, ring: &[Point], operand
     let n = open_len(ring);
     for i in 0..n {
         let (from, to) = (ring[i], ring[next_around(i, n)]);
-        if from == to {
-            continue;
-        }
-        let (from, to) = ([from.x, from.y], [to.x, to.y]);
-        // Sweep order: by x, then y (§7.1: a vertical edge's lower end is its left end).
-        let forward = (from[0], from[1]) < (to[0], to[1]);
-        let (a, b) = if forward { (from, to) } else { (to, from) };
-        edges.push(InputEdge {
-            line: Line { a, b },
-            operand,
-            // Crossing an edge upwards enters a counter-clockwise ring when the edge runs left to right.
-            winding: if forward { 1 } else { -1 },
-        });
+        push_edge(edges, [from.x, from.y], [to.x, to.y], operand);
     }
+}
+
+/// The edge of a ring from `from` to `to` (none if they are equal), with the winding that ring gives it.
+#[inline(always)]
+pub(crate) fn push_edge(
+    edges: &mut Vec<InputEdge>,
+    from: [f64; 2],
+    to: [f64; 2],
+    operand: Operand,
+) {
+    if from == to {
+        return;
+    }
+    // Sweep order: by x, then y (§7.1: a vertical edge's lower end is its left end).
+    let forward = (from[0], from[1]) < (to[0], to[1]);
+    let (a, b) = if forward { (from, to) } else { (to, from) };
+    edges.push(InputEdge {
+        line: Line { a, b },
+        operand,
+        // Crossing an edge upwards enters a counter-clockwise ring when the edge runs left to right.
+        winding: if forward { 1 } else { -1 },
+    });
 }
 
 #[cfg(test)]

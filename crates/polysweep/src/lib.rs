@@ -59,6 +59,7 @@ mod overlay;
 mod prune;
 mod rounding;
 mod select;
+mod snap_round;
 mod status;
 mod structure;
 mod subdivide;

@@ -7,17 +7,19 @@
 //!                                                    subdivide, select
 //! ```
 
-use crate::edges::{InputEdge, NONE};
+use crate::edges::InputEdge;
 use crate::error::Error;
 use crate::events::MAX_EVENTS;
 use crate::geometry::MultiPolygon;
 use crate::input::{self, Bounds};
 use crate::options::Options;
 use crate::select::{FillRule, Operation, Selection};
+use crate::snap_round::Grid;
 use crate::structure::{add_watched_edges, valid_by_structure, Watch};
 use crate::sweep::Sweep;
+use crate::validate::validate;
 use crate::workspace::{self, Workspace};
-use crate::{connect, prune, rounding};
+use crate::{connect, prune, rounding, snap_round};
 
 /// `operation` on `subject` and `clipping`, in this thread's working memory.
 pub(crate) fn overlay_pair(
@@ -205,18 +207,12 @@ fn stop_x(operation: Operation, boxes: &[Bounds], options: &Options) -> f64 {
     }
 }
 
-/// Repair passes allowed after one operation. Each pass sweeps the rounded result, whose vertices are then exact
-/// inputs: a pass that constructs no crossing point rounds nothing and ends the repair. On Table 1's data no pass is
-/// needed; on random decimal grids, one in 99.4% of the cases and three at most (see the robustness page); the
-/// bound only guarantees that the function returns.
-const MAX_REPAIR_PASSES: usize = 4;
-
 /// The sweep of Fig. 5 over `edges`, whose coordinates are of magnitude `magnitude` at most, then the result
-/// rounded to f64 and, where rounding may have broken it, repaired by sweeping it again (see the robustness page;
-/// the result lies within the edges' box, so within the same magnitude). `edges` is given to `workspace` once done.
-/// `watch`, if any, watches the first sweep (see [`crate::structure`]).
+/// rounded to f64; where rounding may have broken it, it is validated, and if it is broken, snap-rounded instead
+/// (see the robustness page, "Termination": at most four more sweeps, no loop). `edges` is given to `workspace`
+/// once done. `watch`, if any, watches the first sweep (see [`crate::structure`]).
 pub(crate) fn sweep(
-    mut edges: Vec<InputEdge>,
+    edges: Vec<InputEdge>,
     selection: Selection,
     stop_x: f64,
     magnitude: f64,
@@ -224,44 +220,26 @@ pub(crate) fn sweep(
     workspace: &mut Workspace,
     watch: Option<&mut Watch>,
 ) -> Result<(MultiPolygon, Stats), Error> {
-    let first = Pass {
-        stop_x,
-        magnitude,
-        may_snap: MAX_REPAIR_PASSES > 0,
-    };
-    let (mut result, mut stats, mut suspect) =
-        sweep_once(&edges, selection, first, options, workspace, watch)?;
+    let pass = Pass { stop_x, magnitude };
+    let (mut result, mut stats, suspect) =
+        sweep_once(&edges, selection, pass, options, workspace, watch)?;
     stats.input_edges = edges.len();
-    while suspect && stats.repair_passes < MAX_REPAIR_PASSES {
-        edges.clear();
-        input::add_edges(&mut edges, &result, 0, |_| true);
-        let repair = Selection::Count {
-            operation: Operation::Union,
-            operands: 1,
-        };
-        stats.repair_passes += 1;
-        let pass = Pass {
-            stop_x: f64::INFINITY,
-            magnitude,
-            may_snap: stats.repair_passes < MAX_REPAIR_PASSES,
-        };
-        (result, _, suspect) = sweep_once(&edges, repair, pass, options, workspace, None)?;
+    if suspect && validate(&result).is_err() {
+        (result, stats.snap_rounding_sweeps) =
+            snap_rounded(&edges, selection, pass, options, workspace)?;
     }
     workspace.edges = edges;
     Ok((result, stats))
 }
 
-/// How one sweep goes: where it stops, the magnitude of its coordinates, and whether a repair pass may follow it.
-/// Edges bent through vertices (see [`rounding`]) meet there only once the result is swept again, so the last pass
-/// allowed bends none and writes the result as rounded.
+/// Where one sweep stops, and the magnitude of its coordinates.
 #[derive(Clone, Copy)]
 struct Pass {
     stop_x: f64,
     magnitude: f64,
-    may_snap: bool,
 }
 
-/// One sweep and its rounded result, and whether that result needs a repair pass.
+/// One sweep and its rounded result, and whether rounding may have broken that result.
 fn sweep_once(
     edges: &[InputEdge],
     selection: Selection,
@@ -270,19 +248,7 @@ fn sweep_once(
     workspace: &mut Workspace,
     watch: Option<&mut Watch>,
 ) -> Result<(MultiPolygon, Stats, bool), Error> {
-    // (Checked before the events are made: their construction counts endpoints in 32 bits.)
-    if 2 * edges.len() > MAX_EVENTS {
-        return Err(Error::TooLarge { limit: MAX_EVENTS });
-    }
-    let shortcuts = options.shortcuts;
-    let mut sweep = Sweep::new(
-        edges,
-        selection,
-        pass.stop_x,
-        pass.magnitude,
-        shortcuts,
-        workspace,
-    );
+    let mut sweep = start_sweep(edges, selection, pass, options, workspace)?;
     sweep.watch = watch;
     sweep.run()?;
     if let Some(watch) = sweep.watch.as_deref_mut() {
@@ -300,32 +266,87 @@ fn sweep_once(
     let rounded = stats.crossings > 0;
     let suspect = rounded && (sweep.close_call || rounding::rounding_may_matter(&sweep.vertices));
     let events = &sweep.events;
-    // Close calls to snap, as (vertex, result edge): only where rounding can move something. An input vertex and
-    // an edge between input vertices are written as they are, so their exact sides hold: a bend there could only
-    // join regions that come within an ulp of each other without meeting (issue 24).
-    let is_input = |v: u32| sweep.vertices[v as usize].is_input();
-    let close_pairs: Vec<(u32, u32)> = if rounded && pass.may_snap {
-        (sweep.close_pairs.iter())
-            .map(|&(v, l)| (v, events[l as usize].result_edge()))
-            .filter(|&(_, r)| r != NONE)
-            .filter(|&(v, r)| {
-                let e = &sweep.result[r as usize];
-                !(is_input(v) && is_input(e.from) && is_input(e.to))
-            })
-            .collect()
-    } else {
-        Vec::new()
-    };
-    let (result, resweep) = connect::connect(
+    let (result, made_vertical) = connect::connect(
         &sweep.exact,
         edges,
         &sweep.vertices,
         &mut sweep.result,
         |e| events[e as usize].result_edge(),
-        &close_pairs,
     );
     sweep.give_back(workspace);
-    Ok((result, stats, suspect || resweep))
+    Ok((result, stats, suspect || made_vertical))
+}
+
+/// A sweep over `edges`, not yet run.
+fn start_sweep<'a>(
+    edges: &'a [InputEdge],
+    selection: Selection,
+    pass: Pass,
+    options: &Options,
+    workspace: &mut Workspace,
+) -> Result<Sweep<'a>, Error> {
+    // (Checked before the events are made: their construction counts endpoints in 32 bits.)
+    if 2 * edges.len() > MAX_EVENTS {
+        return Err(Error::TooLarge { limit: MAX_EVENTS });
+    }
+    let shortcuts = options.shortcuts;
+    Ok(Sweep::new(
+        edges,
+        selection,
+        pass.stop_x,
+        pass.magnitude,
+        shortcuts,
+        workspace,
+    ))
+}
+
+/// The result of the sweep over `edges`, snap-rounded ([`snap_round`]) and read back by one more sweep, whose
+/// result is exact where the snapped edges meet only at their ends or along each other. On the floats' own cells
+/// that holds but across powers of two; where it does not (the sweep back constructs a point), the same is done on
+/// the uniform grid, where it always holds. Also says how many sweeps this made: 2, or 4.
+fn snap_rounded(
+    edges: &[InputEdge],
+    selection: Selection,
+    pass: Pass,
+    options: &Options,
+    workspace: &mut Workspace,
+) -> Result<(MultiPolygon, usize), Error> {
+    let (result, crossings) = snap_to(Grid::Floats, edges, selection, pass, options, workspace)?;
+    if crossings == 0 {
+        return Ok((result, 2));
+    }
+    let uniform = Grid::uniform(pass.magnitude);
+    let (result, crossings) = snap_to(uniform, edges, selection, pass, options, workspace)?;
+    debug_assert_eq!(crossings, 0, "edges snap-rounded on a uniform grid cross");
+    Ok((result, 4))
+}
+
+/// The sweep over `edges`, its result snap-rounded to `grid` and swept back; and the crossings that sweep found.
+fn snap_to(
+    grid: Grid,
+    edges: &[InputEdge],
+    selection: Selection,
+    pass: Pass,
+    options: &Options,
+    workspace: &mut Workspace,
+) -> Result<(MultiPolygon, usize), Error> {
+    let mut sweep = start_sweep(edges, selection, pass, options, workspace)?;
+    sweep.run()?;
+    let snapped =
+        snap_round::snap_rounded_edges(&sweep.exact, edges, &sweep.vertices, &sweep.result, grid);
+    sweep.give_back(workspace);
+    // Read as every ring is: winding 1 inside, 0 outside.
+    let union = Selection::Count {
+        operation: Operation::Union,
+        operands: 1,
+    };
+    let whole = Pass {
+        stop_x: f64::INFINITY,
+        // (A cell's centre is within a cell of the magnitude's float.)
+        magnitude: pass.magnitude * 2.0,
+    };
+    let (result, stats, _) = sweep_once(&snapped, union, whole, options, workspace, None)?;
+    Ok((result, stats.crossings))
 }
 
 /// What an operation did, for display and benchmarks.
@@ -343,9 +364,10 @@ pub struct Stats {
     pub crossings: usize,
     /// Events created, including those made by subdivision.
     pub events: usize,
-    /// Extra sweeps over the rounded result because rounding put vertices within a few ulps of each other (see
-    /// the robustness page). Almost always 0.
-    pub repair_passes: usize,
+    /// Extra sweeps because the rounded result failed validation, where rounding put vertices within a few ulps of
+    /// edges: 2 (the result snap-rounded, then read back), 4 (again, on a uniform grid), else 0 (see the
+    /// robustness page). Almost always 0.
+    pub snap_rounding_sweeps: usize,
     /// Under [`FillRule::Structure`], the sweeps that reading the operands by their structure added to the
     /// operation's own: 0 where the operation's sweep found every operand a valid polygon set (simple rings apart
     /// from each other, holes in their own shells), which it then reads as it is. Otherwise one for that first

@@ -281,7 +281,7 @@ mod tests {
     /// A simple ring is written closed, counter-clockwise, from its lowest-leftmost vertex; not one that the sweep
     /// would write otherwise: a sliver whose float area is 0 (exactly 2^-95, which `connect` drops; its vertex
     /// across from the long edge is also too close to that edge, by the float cross product, 0), or one with a
-    /// vertex 2.4e-15 from an edge not its own (which `connect` may bend through it).
+    /// vertex 2.4e-15 from an edge not its own (which snap rounding may bend through it).
     #[test]
     fn writes_a_ring_as_the_sweep_does_or_not_at_all() {
         let ring = |points: &[[f64; 2]]| -> Vec<Point> {

@@ -2,9 +2,9 @@
 //!
 //! The sweep decides everything exactly; only the written rings are rounded. Rounding moves a vertex by at most
 //! half an ulp, so it can matter only where a rounded crossing lands within a few ulps of another vertex
-//! ([`rounding_may_matter`], which asks for a repair sweep). Distinct exact vertices that round to one point become
-//! one vertex ([`merge_rounded`]), and an edge that passed within a few ulps of a vertex is bent through it where it
-//! crosses the vertex's rounding cell ([`snap_points`], snap rounding's hot pixel); the result is then swept again.
+//! ([`rounding_may_matter`], which asks for the result to be validated), or where a short edge becomes vertical
+//! ([`rounding_made_vertical`]). Distinct exact vertices that round to one point become one vertex
+//! ([`merge_rounded`]). Where the rounded result fails validation, it is snap-rounded instead ([`crate::snap_round`]).
 
 use crate::edges::{InputEdge, ResultEdge, NONE};
 use crate::exact::SweepPoint;
@@ -213,54 +213,6 @@ pub(crate) fn rounding_made_vertical(
             && points[e.from as usize].x == points[e.to as usize].x
             && !input[e.segment as usize].line.is_vertical()
     })
-}
-
-/// Snap rounding of the close calls (Hobby's hot pixels): a result edge that passes through the rounding cell of a
-/// result vertex it came within a few ulps of is bent through that vertex's rounded point. Returns, for each such
-/// edge, the points to insert after its start, in order along it, sorted by edge.
-///
-/// The cell is the square of half an ulp around the rounded point, and the tests are in floats. They decide no
-/// predicate of the sweep, only where the written ring takes a detour of an ulp or less: a bend made or missed by
-/// their error is left to the repair sweep that always follows a bend, which is exact.
-pub(crate) fn snap_points(
-    input: &[InputEdge],
-    edges: &[ResultEdge],
-    vertex_ids: &[u32],
-    points: &[Point],
-    close_pairs: &[(u32, u32)],
-) -> Vec<(u32, Point)> {
-    let mut snaps: Vec<(u32, f64, Point)> = Vec::new();
-    for &(v, r) in close_pairs {
-        let id = vertex_ids[v as usize];
-        if id == NONE {
-            continue; // not a vertex of the result
-        }
-        let e = &edges[r as usize];
-        let (p, a, b) = (
-            points[id as usize],
-            points[e.from as usize],
-            points[e.to as usize],
-        );
-        if p == a || p == b {
-            continue;
-        }
-        let line = &input[e.segment as usize].line;
-        let ([dx, dy], cross) = line.float_offset([p.x, p.y]);
-        let (hx, hy) = (ulp(p.x) / 2.0, ulp(p.y) / 2.0);
-        // A line meets a box when its offset from the centre is at most the box's reach across it.
-        if cross.abs() > hx * dy.abs() + hy * dx.abs() {
-            continue;
-        }
-        // Where along the edge, from its start (0) to its end (1).
-        let (ex, ey) = (b.x - a.x, b.y - a.y);
-        let t = ((p.x - a.x) * ex + (p.y - a.y) * ey) / (ex * ex + ey * ey);
-        if t > 0.0 && t < 1.0 {
-            snaps.push((r, t, p));
-        }
-    }
-    snaps.sort_by(|x, y| x.0.cmp(&y.0).then(x.1.total_cmp(&y.1)));
-    snaps.dedup_by(|x, y| x.0 == y.0 && x.2 == y.2);
-    snaps.into_iter().map(|(r, _, p)| (r, p)).collect()
 }
 
 #[cfg(test)]

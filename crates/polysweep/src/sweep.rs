@@ -91,10 +91,6 @@ pub(crate) struct Sweep<'a> {
     /// Some event point passed within a few ulps of a neighbouring edge: rounding the output could move one across
     /// the other (see `note_close_calls`).
     pub close_call: bool,
-    /// The close calls: a vertex (index into `vertices`) and the left event of the edge it came within a few ulps
-    /// of. The output bends such an edge through the vertex where the edge passes through the vertex's rounding cell
-    /// (see [`crate::connect`]).
-    pub close_pairs: Vec<(u32, EventId)>,
     /// The clearance of the largest magnitude of the input's coordinates, which bounds every point's (crossings
     /// lie between input vertices): edges farther than this from a point need no closer look.
     widest_clearance: f64,
@@ -149,7 +145,6 @@ impl<'a> Sweep<'a> {
             inserting: NONE,
             last_left: NONE,
             close_call: false,
-            close_pairs: Vec::new(),
             widest_clearance: crate::rounding::clearance(magnitude),
             max_events: MAX_EVENTS,
             stopped: None,

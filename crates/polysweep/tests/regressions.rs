@@ -1,8 +1,8 @@
 //! Cases found by review, each with its expectation worked out by hand.
 
 use polysweep::{
-    difference, intersection, overlay, overlay_with_stats, union, union_all, xor_all, FillRule,
-    MultiPolygon, Operation, Options,
+    difference, intersection, overlay, overlay_all, overlay_with_stats, union, union_all, xor_all,
+    FillRule, MultiPolygon, Operation, Options,
 };
 
 /// Intersection and difference skip polygons outside the box where the result can lie. A hole ring may reach
@@ -209,7 +209,8 @@ fn a_ring_is_checked_at_its_exact_extreme_vertex() {
 /// Found by a scratch run of random operands on a grid of spacing 0.1 (decimal coordinates, which floats do not
 /// represent, so vertices lie within ulps of other edges without being on them). Near (0.7, 0.2) the union
 /// has a cluster of crossings a few ulps apart; rounding them moved edges across each other, and the repair passes
-/// cycled on the same rounding without converging, leaving edges that cross. Expected: a valid result, of area
+/// (sweeps of the rounded result, before snap rounding) cycled on the same rounding without converging, leaving
+/// edges that cross. Expected: a valid result, of area
 /// 0.145545618597089... (the union integrated exactly in rationals from the floats given, slab by slab between the x
 /// of every vertex and crossing).
 #[test]
@@ -247,19 +248,23 @@ fn rounding_a_cluster_of_crossings_leaves_no_edges_crossing() {
             [0.1, 0.30000000000000004],
         ]],
     ]);
-    let result = union(&a, &b).unwrap();
+    let (result, stats) =
+        overlay_with_stats(Operation::Union, &a, &b, &Options::default()).unwrap();
     assert_eq!(polysweep::validate(&result), Ok(()));
     assert!((result.area() - 0.145_545_618_597_089_2).abs() < 1e-12);
+    // Rounded plainly, edges cross: the result is snap-rounded and read back (see docs/robustness.md, §3).
+    assert_eq!(stats.snap_rounding_sweeps, 2);
 }
 
 /// Issue 24: three triangles fanned around the origin. W2's vertex (-3.05317, -2.584212) lies 7e-17 rad off W3's
 /// edge from the origin to (-4.579755, -3.876318), exactly on W2's side, so W3 meets W1 and W2 only at the origin.
-/// W2's vertex (-4.90762, 3.45185) lies inside W1, so the final sweep constructs a crossing and rounds; it snapped
-/// the close call, bending W3's edge through W2's vertex, and the union came out as one polygon. Expected: two
+/// W2's vertex (-4.90762, 3.45185) lies inside W1, so the final sweep constructs a crossing and rounds; the snapping
+/// of close calls (before snap rounding replaced it) bent W3's edge through W2's vertex, and the union came out as
+/// one polygon. Expected: two
 /// polygons, W1 ∪ W2 and W3, of area 53.12985622384823 (in rationals from the floats given: the pentagon of W1 ∪ W2
 /// through the crossing, plus W3).
 #[test]
-fn a_close_call_between_input_vertices_is_not_snapped() {
+fn triangles_fanned_around_a_point_stay_apart() {
     let triangle = |points: [[f64; 2]; 3]| {
         MultiPolygon::from_coordinates(&[vec![vec![points[0], points[1], points[2], points[0]]]])
     };
@@ -326,11 +331,12 @@ fn a_hole_with_snapped_points_finds_its_shell() {
 
 /// Issue 24, found by the differential test (tests/differential, seed 20091, case 148): B's vertex
 /// (-1.2002201991730366e-06, 0.0261872278596968) lies within 1e-18 of A's lower edge, and B's two edges cross that
-/// edge a few ulps from it. Snapping the close call bent an edge through a crossing's rounded point, and the xor
-/// came out as one polygon with a hole. Written without the bend the result is valid, and has the exact topology:
+/// edge a few ulps from it. The snapping of close calls (before snap rounding replaced it) bent an edge through a
+/// crossing's rounded point, and the xor came out as one polygon with a hole. Rounded plainly, the result is valid,
+/// and has the exact topology:
 /// two polygons, no hole, of area 2.9342839989984237 (the exact reference, `exact.py`, in rationals).
 #[test]
-fn a_bend_is_left_out_where_the_result_is_valid_without_it() {
+fn a_vertex_an_ulp_from_an_edge_keeps_the_xor_in_two() {
     let a = MultiPolygon::from_coordinates(&[vec![vec![
         [-1.0, -0.1007313058064152],
         [1.0, 0.15310606618654998],
@@ -347,4 +353,81 @@ fn a_bend_is_left_out_where_the_result_is_valid_without_it() {
     assert_eq!(result.0.len(), 2);
     assert!(result.0.iter().all(|p| p.holes.is_empty()));
     assert!((result.area() - 2.934_283_998_998_423_7).abs() < 1e-12);
+}
+
+/// Issue 24, found by the fuzzer (`fuzz/`, with debug assertions): the xor of three operands on a grid of spacing
+/// 0.7, nudged by a few ulps, needs snap rounding. On the floats' own cells, two long snapped edges from x < 0 to
+/// x ≈ 0.37, whose ends lie in neighbouring cells, crossed: the cells shrink towards zero, and the argument for snap
+/// rounding holds on uniform grids only. Snapped on the uniform grid, the result is valid. Expected: its area,
+/// 47.36406256690653 (the exact reference, `tests/differential/exact.py`, in rationals).
+#[test]
+fn snap_rounding_across_powers_of_two_uses_a_uniform_grid() {
+    let operands = [
+        MultiPolygon::from_coordinates(&[
+            vec![vec![
+                [4.900000000000002, -4.199999999999997],
+                [-5.599999999999998, -4.2],
+                [3.4999999999999987, -0.6999999999999997],
+                [-2.7999999999999994, -5.599999999999999],
+                [-4.199999999999998, 3.4999999999999996],
+                [4.900000000000002, -2.799999999999998],
+                [-4.199999999999997, -5.599999999999997],
+                [-5.599999999999998, 3.4999999999999987],
+                [-2.1, -2.1],
+                [-5.599999999999996, -5.599999999999996],
+            ]],
+            vec![vec![
+                [-5.599999999999999, -4.2],
+                [-2.799999999999998, 2.100000000000001],
+                [4.900000000000002, -5.599999999999999],
+                [-5.599999999999998, -2.1],
+                [3.5000000000000013, -5.599999999999996],
+                [-4.2, 3.4999999999999987],
+                [-2.100000000000001, -2.1],
+                [-5.599999999999996, -5.599999999999996],
+            ]],
+            vec![vec![
+                [-5.599999999999998, -4.2],
+                [4.899999999999999, -2.1],
+                [3.5000000000000013, -5.599999999999996],
+            ]],
+        ]),
+        MultiPolygon::from_coordinates(&[vec![
+            vec![[-4.2, 3.4999999999999987]],
+            vec![
+                [4.900000000000001, -5.599999999999999],
+                [-5.599999999999998, -2.1],
+                [3.5000000000000013, -5.599999999999996],
+                [-4.2, 3.4999999999999987],
+            ],
+            vec![
+                [4.900000000000002, 4.900000000000002],
+                [-5.599999999999997, -5.599999999999998],
+                [-2.7999999999999985, 3.4999999999999987],
+            ],
+        ]]),
+        MultiPolygon::from_coordinates(&[
+            vec![
+                vec![[-4.2, 3.4999999999999987]],
+                vec![
+                    [4.900000000000002, -5.599999999999999],
+                    [-5.599999999999998, -2.1],
+                    [3.5000000000000013, -5.599999999999996],
+                    [-4.2, 3.4999999999999987],
+                    [-2.100000000000001, -2.1],
+                    [3.5000000000000013, -5.599999999999996],
+                ],
+            ],
+            vec![vec![
+                [-5.599999999999999, -4.2],
+                [4.900000000000002, 4.900000000000002],
+                [-5.599999999999996, -2.1],
+                [-5.599999999999996, 4.900000000000002],
+            ]],
+        ]),
+    ];
+    let options = Options::default().with_fill_rule(FillRule::EvenOdd);
+    let result = overlay_all(Operation::Xor, &operands, &options).unwrap();
+    assert_eq!(polysweep::validate(&result), Ok(()));
+    assert!((result.area() - 47.364_062_566_906_53).abs() < 1e-12);
 }

@@ -58,7 +58,7 @@ pub(crate) fn copied_whole(
 /// walk of [`crate::connect`] begins). `None` if it is not simple, or where the sweep would write it otherwise:
 /// where its float area, by which `connect` tells a ring's orientation, has not the sign of its exact turn (a
 /// sliver, which `connect` drops), or where a vertex lies within `margin` of an edge not its own (an edge that
-/// `connect` could bend through the vertex, should the result be rounded anywhere). Also `None` where the ring's own
+/// snap rounding could bend through the vertex, should the result be snap-rounded, see [`crate::snap_round`]). Also `None` where the ring's own
 /// region under `fill_rule` is empty: a clockwise ring under the positive rule, a counter-clockwise one under the
 /// negative.
 pub(super) fn as_written(ring: &[Point], fill_rule: FillRule, margin: f64) -> Option<Ring> {
@@ -87,8 +87,9 @@ pub(super) fn as_written(ring: &[Point], fill_rule: FillRule, margin: f64) -> Op
 /// Does a vertex of closed `ring` lie within about `margin` of one of its edges that does not end there? Asked in
 /// floats, of twice `margin` and of the edge's box grown by as much. Not a tolerance that decides the result: it
 /// only chooses between copying the ring and sweeping it, and it errs towards sweeping. Twice `margin` is 16 ulps
-/// of the input's largest magnitude, where the sweep's close calls reach 4 and the float cross products (this one
-/// and `connect`'s) err by under 5 each: a ring the sweep could bend through its own vertex is never copied.
+/// of the input's largest magnitude, where a rounding cell reaches half of one and the float cross products (this
+/// one and snap rounding's filter) err by under 5 each: a ring snap rounding could bend through its own vertex is
+/// never copied.
 fn vertex_near_an_edge(ring: &[Point], margin: f64) -> bool {
     let n = ring.len() - 1;
     let near = 2.0 * margin;

@@ -11,9 +11,8 @@ use std::cmp::Ordering;
 impl Sweep<'_> {
     /// Rounding moves a constructed point by at most half an ulp, and an edge with such an end (even one made by a
     /// later split) by as much. So an event point can end up on the other side of a neighbouring edge only if it
-    /// lies within a few ulps of it; `close_call` notes it, and the result is then swept again; `close_pairs` notes
-    /// which vertex and edge, for the output to snap the edge to the vertex where it passes through its rounding
-    /// cell. `p`, the current vertex, is checked against the neighbours of the edge at `node` in S.
+    /// lies within a few ulps of it; `close_call` notes it, and the rounded result is then validated. `p`, the
+    /// current vertex, is checked against the neighbours of the edge at `node` in S.
     #[inline(always)]
     pub(super) fn note_close_calls(&mut self, p: &SweepPoint, node: u32) {
         self.note_close_calls_of(p, [self.status.prev(node), self.status.next(node)]);
@@ -25,8 +24,6 @@ impl Sweep<'_> {
         for neighbour in nodes {
             if self.is_close_call(p, neighbour) {
                 self.close_call = true;
-                let pair = (self.current_vertex(), self.status.event(neighbour));
-                self.close_pairs.push(pair);
             }
         }
     }
