@@ -256,6 +256,17 @@ pub(crate) fn connect(
             // to nothing was between them, and they can even run back along each other), or the ring can pass
             // straight through: then the turn says nothing and only the rounded orientation tells.
             let meet_exactly = exact_ends[incoming].1 == exact_ends[outgoing].0;
+            // A ring written exactly (no vertex of it rounded) is not turned by rounding: its float area can only
+            // have been summed wrong (a sliver), and its exact turn is its orientation.
+            let written_exactly = || {
+                (ring.iter()).all(|&e| {
+                    let v = &vertices[exact_ends[e].0 as usize];
+                    v.is_exact(0) && v.is_exact(1)
+                })
+            };
+            if meet_exactly && exact_turn != Ordering::Equal && written_exactly() {
+                return exact_turn;
+            }
             if !meet_exactly || exact_turn == Ordering::Equal || exact_turn == rounded_turn {
                 rounded_turn
             } else {
