@@ -4,7 +4,8 @@
 //! result fed into a second operation. Each result must validate, and be right at sample points away from every
 //! edge: membership there is decided exactly (orient2d on the input's float vertices) from the operands alone.
 //!
-//! Run: `RUSTC_BOOTSTRAP=1 cargo fuzz run overlay` in `fuzz/` (see docs/robustness.md for the figures).
+//! Run: `RUSTC_BOOTSTRAP=1 cargo fuzz run -O -a overlay` in `fuzz/` (`-a`: with debug assertions, among them that
+//! snap rounding's last sweep constructs no point; see docs/robustness.md for the figures).
 #![no_main]
 
 use arbitrary::Arbitrary;

@@ -268,12 +268,12 @@ impl Exact {
         SweepPoint::crossing_at(approx, index, representable)
     }
 
-    /// How many crossing points were constructed.
     /// Room for `more` crossings without allocating (see [`crate::workspace::room`]).
     pub fn room(&mut self, more: usize) -> bool {
         crate::workspace::room(&mut self.crossings, more)
     }
 
+    /// How many crossing points were constructed.
     pub fn crossing_count(&self) -> usize {
         self.crossings.len()
     }

@@ -1,8 +1,8 @@
 //! The pipeline of one operation (Fig. 5 and §5): the input checked and made edges, the sweep, the result edges
-//! connected into rings and polygons, and the rounded result repaired where rounding may have broken it.
+//! connected into rings and polygons, and the rounded result snap-rounded where rounding broke it.
 //!
 //! ```text
-//! input::check ─► prune::plan ─► input::add_edges ─► Sweep::run ─► connect ─► (repair sweeps) ─► MultiPolygon
+//! input::check ─► prune::plan ─► input::add_edges ─► Sweep::run ─► connect ─► (snap rounding) ─► MultiPolygon
 //!                 (shortcuts)                        events, status,
 //!                                                    subdivide, select
 //! ```

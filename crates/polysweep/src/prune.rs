@@ -34,10 +34,10 @@
 //!
 //! Exact means here that the exact result, before it is rounded to floats, is the same: all of this, and the
 //! pruning by boxes, can change the rounding step elsewhere in the result. Whether any crossing was made at all,
-//! and which vertices came within a few ulps of which edges, are asked of the edges swept (see `sweep_once` and
-//! [`crate::connect`]), so a polygon left out (a self-crossing one, say) can switch the snapping of a close call
-//! far from it on or off, which moves a result edge by about an ulp. Either way the rounded result is valid (see
-//! the robustness page); only its last bits depend on what was swept.
+//! and which vertices came within a few ulps of which edges, are asked of the edges swept (see `sweep_once`), so a
+//! polygon left out (a self-crossing one, say) can switch snap rounding far from it on or off, which moves a result
+//! edge by about an ulp. Either way the rounded result is valid (see the robustness page); only its last bits
+//! depend on what was swept.
 
 mod convex;
 mod copy;

@@ -36,9 +36,9 @@ struct Span {
 }
 
 impl Grid {
-    /// The uniform grid for points whose coordinates are `magnitude` at most (a normal float): the spacing of the
-    /// floats in [2^(k+1), 2^(k+2)) for `magnitude` in [2^k, 2^(k+1)), so that the centres and sides of all cells
-    /// that can hold a point (multiples of half the spacing, below 2^(k+2)) are floats.
+    /// The uniform grid for points whose coordinates are `magnitude` at most (a normal float): twice the spacing of
+    /// the floats in [2^(k+1), 2^(k+2)) for `magnitude` in [2^k, 2^(k+1)), so that the centres and sides of all
+    /// cells that can hold a point (multiples of half the spacing, below 2^(k+2)) are floats.
     pub fn uniform(magnitude: f64) -> Grid {
         let exponent = ((magnitude.to_bits() >> 52) & 0x7ff) as i64 - 1023;
         Grid::Uniform {

@@ -55,12 +55,12 @@ impl EventQueue {
         }
     }
 
-    /// Empties the queue.
     /// Room for `more` events without allocating (see [`crate::workspace::room`]).
     pub fn room(&mut self, more: usize) -> bool {
         crate::workspace::room(&mut self.heap, more)
     }
 
+    /// Empties the queue.
     pub fn clear(&mut self) {
         self.next_initial = self.initial;
         self.heap.clear();

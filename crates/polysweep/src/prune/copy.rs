@@ -20,7 +20,7 @@ const MAX_VERTICES_TO_COPY: usize = 32;
 /// than `margin` from every other clipping polygon's box (`boxes`). There the clipping operand is that ring alone
 /// and the subject is everywhere, so the ring is its own part of the intersection. The rest of the result lies
 /// within the other clipping polygons' boxes, and rounding moves it by less than `margin`: it cannot meet the
-/// copies, nor be snapped to them (see [`crate::connect`]). (Polygons wholly outside the subject, `Some(false)`,
+/// copies, nor be snapped to them (see [`crate::snap_round`]). (Polygons wholly outside the subject, `Some(false)`,
 /// are apart from the copies without a look: their grown boxes lie outside the subject, the copies' inside it.)
 pub(crate) fn copied_whole(
     clipping: &MultiPolygon,
