@@ -126,6 +126,16 @@ def _canon(X, Y, D):
     return (X, Y, D)
 
 
+def _add_inside(nodes, a, b, points):
+    """Append to `nodes` each of `points` (on the line of segment a b) that lies strictly inside a b."""
+    ex, ey = b[0] - a[0], b[1] - a[1]
+    length2 = ex * ex + ey * ey
+    for px, py in points:
+        t = (px - a[0]) * ex + (py - a[1]) * ey
+        if 0 < t < length2:
+            nodes.append((px, py, 1))
+
+
 def _orient(ax, ay, bx, by, cx, cy):
     return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
 
@@ -191,18 +201,8 @@ class Arrangement:
                 o2 = _orient(ax, ay, bx, by, dx, dy)
                 if o1 == 0 and o2 == 0:
                     # collinear: each endpoint strictly inside the other segment is a node of it
-                    ex, ey = bx - ax, by - ay
-                    ll = ex * ex + ey * ey
-                    for px, py in ((cx, cy), (dx, dy)):
-                        t = (px - ax) * ex + (py - ay) * ey
-                        if 0 < t < ll:
-                            nodes[i].append((px, py, 1))
-                    fx, fy = dx - cx, dy - cy
-                    mm = fx * fx + fy * fy
-                    for px, py in ((ax, ay), (bx, by)):
-                        t = (px - cx) * fx + (py - cy) * fy
-                        if 0 < t < mm:
-                            nodes[j].append((px, py, 1))
+                    _add_inside(nodes[i], (ax, ay), (bx, by), ((cx, cy), (dx, dy)))
+                    _add_inside(nodes[j], (cx, cy), (dx, dy), ((ax, ay), (bx, by)))
                     continue
                 if (o1 > 0 and o2 > 0) or (o1 < 0 and o2 < 0):
                     continue

@@ -150,9 +150,10 @@ pub(crate) fn snap_rounded_edges(
     edges
 }
 
-/// Can `line` pass through the cell centred at `c`? A float filter, generous: a cell reaches half an ulp (of the
-/// float grid, or half the spacing) from its centre, and the float offset of a point from a line is off by a few
-/// ulps of the coordinates.
+/// Can `line` pass through the cell centred at `c`? A float filter, not a tolerance: it decides nothing, only
+/// skips cells that [`meets_cell`] would reject. A cell reaches less than an ulp of the magnitude from its centre
+/// (or `spacing`, on the uniform grid), and the float offset of a point from a line is off by at most about 12 ulps
+/// of it, so a cell the line passes through is never filtered out: the margin cannot change a decision.
 fn near(line: &Line, c: [f64; 2], grid: Grid) -> bool {
     let magnitude = [line.a, line.b, c]
         .iter()
@@ -203,6 +204,7 @@ mod tests {
         let meets = |a: [f64; 2], b: [f64; 2], c: [f64; 2]| {
             meets_cell(&exact, &Line { a, b }, c, Grid::Floats)
         };
+        // (`f64::EPSILON` is 2^-52, used to place lines exactly through corners, not as a tolerance.)
         let (one, next) = (1.0f64, 1.0f64.next_up());
         assert!(meets([0.0, 0.0], [2.0, 2.0], [one, one])); // through the middle
         assert!(!meets([0.0, 0.5], [2.0, 0.5], [one, one])); // below
