@@ -12,6 +12,9 @@
 //! `floor` for the sort floor, numbers of squares) and writes no report. `BENCH_FILL_RULE=structure` runs polysweep
 //! under the structural reading (the npm package's default) instead of even-odd.
 
+mod dense;
+
+use geo::algorithm::bool_ops::{FillRule as GeoFillRule, OpType};
 use geo::{Area, BooleanOps};
 use i_overlay::core::fill_rule::FillRule as IFillRule;
 use i_overlay::core::overlay_rule::OverlayRule;
@@ -35,6 +38,8 @@ const REFERENCE: [(usize, f64); 4] = [
 /// on a noisy machine). 21: on this shared 2-core machine, medians of 11 moved by up to 10% between runs of the same
 /// code; the native benchmark takes about a minute and a half with 21.
 const RUNS: usize = 21;
+/// Timed runs of each dense workload (`BENCH_DENSE_RUNS` overrides it): fewer, as the largest take seconds.
+const DENSE_RUNS: usize = 7;
 
 /// Clipper2 works on integers: coordinates scaled by 10^8, its finest documented precision.
 #[derive(Debug, Default, Clone, Copy, PartialEq, Hash)]
@@ -90,10 +95,8 @@ fn squares(n: usize) -> Coordinates {
 /// the machine's speed (this one has slow phases of several seconds) falls on all engines and all sizes alike:
 /// taken workload by workload instead, a slow phase that fell on one size moved the scaling slopes of all engines
 /// by more than their difference. Returns each run's times, sorted, and area (of the first warm-up).
-fn timed_rounds(runs: &mut [Run]) -> Vec<(Vec<f64>, f64)> {
+fn timed_rounds(runs: &mut [Run], rounds: usize) -> Vec<(Vec<f64>, f64)> {
     let areas: Vec<f64> = runs.iter_mut().map(|r| (r.engine)()).collect();
-    let rounds = std::env::var("BENCH_RUNS")
-        .map_or(RUNS, |r| r.parse().expect("BENCH_RUNS: a number of runs"));
     let mut times = vec![Vec::with_capacity(rounds); runs.len()];
     let mut order: Vec<usize> = (0..runs.len()).collect();
     // xorshift64: any fixed sequence of shuffles will do, the same in every benchmark run.
@@ -168,25 +171,51 @@ impl Inputs {
     }
 }
 
-/// The engines and sizes named on the command line; empty means all.
+const ENGINES: [&str; 5] = ["polysweep", "i_overlay", "geo", "clipper2", "floor"];
+
+/// The engines, workloads (`table1` or a dense workload's name) and sizes named on the command line; empty means
+/// all.
 struct Filter {
     engines: Vec<String>,
+    workloads: Vec<String>,
     sizes: Vec<usize>,
 }
 
 impl Filter {
     fn from_args() -> Self {
-        let (sizes, engines): (Vec<String>, Vec<String>) = std::env::args()
+        let (sizes, names): (Vec<String>, Vec<String>) = std::env::args()
             .skip(1)
             .partition(|a| a.parse::<usize>().is_ok());
+        let (engines, workloads) = names
+            .into_iter()
+            .partition(|a| ENGINES.contains(&a.as_str()));
         Filter {
             engines,
+            workloads,
             sizes: sizes.iter().map(|s| s.parse().unwrap()).collect(),
         }
     }
 
     fn is_narrowed(&self) -> bool {
-        !self.engines.is_empty() || !self.sizes.is_empty()
+        !self.engines.is_empty() || !self.workloads.is_empty() || !self.sizes.is_empty()
+    }
+
+    fn workload(&self, name: &str) -> bool {
+        self.workloads.is_empty() || self.workloads.iter().any(|w| w == name)
+    }
+
+    fn dense_names(&self) -> Vec<String> {
+        let names: Vec<String> = self
+            .workloads
+            .iter()
+            .filter(|w| *w != "table1")
+            .cloned()
+            .collect();
+        if !self.workloads.is_empty() && names.is_empty() {
+            vec!["none".into()]
+        } else {
+            names
+        }
     }
 
     fn engine(&self, name: &str) -> bool {
@@ -209,31 +238,57 @@ struct Run<'a> {
     engine: Engine<'a>,
 }
 
-/// The runs of one workload: every engine the filter names, and the sort floor (see `main`), each timed in the same
-/// rounds as all the others (see [`timed_rounds`]), so that the floor and the engines meet the machine's slow and
-/// fast phases alike.
-fn workload<'a>(
+/// The engines on one pair of operands under one operation and fill rule, each returning its result's area. geo has
+/// no fill rule of its own for self-overlapping input beyond i_overlay's, which it wraps; it gets the same rule.
+fn engines<'a>(
     operation: &'static str,
-    land: &'a Inputs,
-    clip: &'a Inputs,
-    n: usize,
-    filter: &Filter,
-) -> Vec<Run<'a>> {
-    let op = match operation {
-        "intersection" => (Operation::Intersection, OverlayRule::Intersect),
-        "union" => (Operation::Union, OverlayRule::Union),
-        _ => (Operation::Difference, OverlayRule::Difference),
+    fill_rule: &str,
+    a: &'a Inputs,
+    b: &'a Inputs,
+) -> Vec<(&'static str, Engine<'a>)> {
+    let (op, i_op, geo_op) = match operation {
+        "intersection" => (
+            Operation::Intersection,
+            OverlayRule::Intersect,
+            OpType::Intersection,
+        ),
+        "union" => (Operation::Union, OverlayRule::Union, OpType::Union),
+        "difference" => (
+            Operation::Difference,
+            OverlayRule::Difference,
+            OpType::Difference,
+        ),
+        "xor" => (Operation::Xor, OverlayRule::Xor, OpType::Xor),
+        _ => panic!("unknown operation {operation}"),
     };
-    let fill_rule = match std::env::var("BENCH_FILL_RULE").as_deref() {
-        Ok("structure") => FillRule::Structure,
-        _ => FillRule::EvenOdd,
+    let nonzero = fill_rule == "nonzero";
+    let ours = if nonzero {
+        FillRule::NonZero
+    } else {
+        match std::env::var("BENCH_FILL_RULE").as_deref() {
+            Ok("structure") => FillRule::Structure,
+            _ => FillRule::EvenOdd,
+        }
     };
-    let options = Options::default().with_fill_rule(fill_rule);
-    let engines: Vec<(&'static str, Engine<'a>)> = vec![
+    let options = Options::default().with_fill_rule(ours);
+    let (i_fill, geo_fill, clipper_fill) = if nonzero {
+        (
+            IFillRule::NonZero,
+            GeoFillRule::NonZero,
+            clipper2::FillRule::NonZero,
+        )
+    } else {
+        (
+            IFillRule::EvenOdd,
+            GeoFillRule::EvenOdd,
+            clipper2::FillRule::EvenOdd,
+        )
+    };
+    vec![
         (
             "polysweep",
             Box::new(move || {
-                polysweep::overlay(op.0, &land.ours, &clip.ours, &options)
+                polysweep::overlay(op, &a.ours, &b.ours, &options)
                     .unwrap()
                     .area()
             }),
@@ -241,7 +296,7 @@ fn workload<'a>(
         (
             "i_overlay",
             Box::new(move || {
-                let shapes = land.shapes.overlay(&clip.shapes, op.1, IFillRule::EvenOdd);
+                let shapes = a.shapes.overlay(&b.shapes, i_op, i_fill);
                 shapes
                     .iter()
                     .flatten()
@@ -252,27 +307,40 @@ fn workload<'a>(
         ),
         (
             "geo",
-            Box::new(move || match operation {
-                "intersection" => land.geo.intersection(&clip.geo).unsigned_area(),
-                "union" => land.geo.union(&clip.geo).unsigned_area(),
-                _ => land.geo.difference(&clip.geo).unsigned_area(),
+            Box::new(move || {
+                a.geo
+                    .boolean_op_with_fill_rule(&b.geo, geo_op, geo_fill)
+                    .unsigned_area()
             }),
         ),
         (
             "clipper2",
             Box::new(move || {
                 let c = clipper2::Clipper::new()
-                    .add_subject(land.clipper.clone())
-                    .add_clip(clip.clipper.clone());
+                    .add_subject(a.clipper.clone())
+                    .add_clip(b.clipper.clone());
                 let result = match operation {
-                    "intersection" => c.intersect(clipper2::FillRule::EvenOdd),
-                    "union" => c.union(clipper2::FillRule::EvenOdd),
-                    _ => c.difference(clipper2::FillRule::EvenOdd),
+                    "intersection" => c.intersect(clipper_fill),
+                    "union" => c.union(clipper_fill),
+                    "difference" => c.difference(clipper_fill),
+                    _ => c.xor(clipper_fill),
                 };
                 result.unwrap().signed_area().abs()
             }),
         ),
-    ];
+    ]
+}
+
+/// The runs of one Table 1 workload: every engine the filter names, and the sort floor (see `main`), each timed in
+/// the same rounds as all the others (see [`timed_rounds`]), so that the floor and the engines meet the machine's
+/// slow and fast phases alike.
+fn workload<'a>(
+    operation: &'static str,
+    land: &'a Inputs,
+    clip: &'a Inputs,
+    n: usize,
+    filter: &Filter,
+) -> Vec<Run<'a>> {
     // The floor: sorting the 2n endpoints of the edges, as the event queue's initial sort does. The same inputs give
     // the same floor for the three operations at 3,895 squares; it is timed for each all the same, so that each
     // ratio to it has a floor of its own (and the three show the noise).
@@ -294,23 +362,22 @@ fn workload<'a>(
         sorted[0][0]
     });
     let floor = has_floor.then_some(("floor", floor));
-    (engines.into_iter().chain(floor))
-        .filter(|(e, _)| filter.engine(e))
-        .map(|(name, engine)| Run {
-            name,
-            operation,
-            squares: n,
-            engine,
-        })
-        .collect()
+    (engines(operation, "evenodd", land, clip)
+        .into_iter()
+        .chain(floor))
+    .filter(|(e, _)| filter.engine(e))
+    .map(|(name, engine)| Run {
+        name,
+        operation,
+        squares: n,
+        engine,
+    })
+    .collect()
 }
 
-fn main() {
-    let filter = Filter::from_args();
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
-    let data = root.join("tests/data");
-    let out_dir = root.join("target/bench");
-    std::fs::create_dir_all(&out_dir).unwrap();
+/// Table 1: land ∩ N squares over the series, ∪ and − at 3,895. Returns the engines' runs and the sort floor's.
+fn table1(filter: &Filter, out_dir: &Path) -> (Vec<Value>, Vec<Value>) {
+    let data = out_dir.join("../../tests/data");
     let land_value = read_gz(&data.join("land-50m.json.gz"));
     std::fs::write(out_dir.join("land.json"), land_value.to_string()).unwrap();
     let land = Inputs::new(coordinates(&land_value));
@@ -338,14 +405,16 @@ fn main() {
         .collect();
     let mut timed: Vec<Run> = Vec::new();
     for (n, clip) in &grids {
-        timed.extend(workload("intersection", &land, clip, *n, &filter));
+        timed.extend(workload("intersection", &land, clip, *n, filter));
         if *n == 3895 {
-            timed.extend(workload("union", &land, clip, *n, &filter));
-            timed.extend(workload("difference", &land, clip, *n, &filter));
+            timed.extend(workload("union", &land, clip, *n, filter));
+            timed.extend(workload("difference", &land, clip, *n, filter));
         }
     }
     let (mut runs, mut floor) = (Vec::new(), Vec::new());
-    let results = timed_rounds(&mut timed);
+    let rounds = std::env::var("BENCH_RUNS")
+        .map_or(RUNS, |r| r.parse().expect("BENCH_RUNS: a number of runs"));
+    let results = timed_rounds(&mut timed, rounds);
     for (run, (times, area)) in timed.iter().zip(results) {
         let (ms, fastest) = (times[times.len() / 2], times[0]);
         let (engine, operation, n) = (run.name, run.operation, run.squares);
@@ -374,6 +443,144 @@ fn main() {
             }
         }
     }
+    (runs, floor)
+}
+
+/// The dense workloads (see `dense`): every engine at every size, timed in rounds as Table 1, then each engine's
+/// peak memory in a process of its own (see [`peak_memory`]). Writes each workload's operands to
+/// target/bench/dense/ for the wasm benchmark.
+fn dense_runs(filter: &Filter, out_dir: &Path, measure_memory: bool) -> Vec<Value> {
+    let dir = out_dir.join("dense");
+    std::fs::create_dir_all(&dir).unwrap();
+    let workloads = dense::workloads(&filter.dense_names(), &filter.sizes);
+    let mut index = Vec::new();
+    let inputs: Vec<(Inputs, Inputs)> = workloads
+        .iter()
+        .map(|w| {
+            let file = format!("{}-{}.json", w.name, w.n);
+            let edges = dense::edge_count(&w.subject) + dense::edge_count(&w.clip);
+            let head = json!({ "workload": w.name, "n": w.n, "operation": w.operation, "fill_rule": w.fill_rule, "edges": edges });
+            let mut body = head.clone();
+            body["subject"] = json!(w.subject);
+            body["clip"] = json!(w.clip);
+            std::fs::write(dir.join(&file), body.to_string()).unwrap();
+            let mut entry = head;
+            entry["file"] = json!(file);
+            index.push(entry);
+            (Inputs::new(w.subject.clone()), Inputs::new(w.clip.clone()))
+        })
+        .collect();
+    if !filter.is_narrowed() {
+        std::fs::write(
+            dir.join("index.json"),
+            serde_json::to_string_pretty(&index).unwrap(),
+        )
+        .unwrap();
+    }
+    let (mut timed, mut counts): (Vec<Run>, Vec<usize>) = (Vec::new(), Vec::new());
+    for (w, (a, b)) in workloads.iter().zip(&inputs) {
+        counts.push(timed.len());
+        for (name, engine) in engines(w.operation, w.fill_rule, a, b) {
+            if filter.engine(name) {
+                timed.push(Run {
+                    name,
+                    operation: w.operation,
+                    squares: w.n,
+                    engine,
+                });
+            }
+        }
+    }
+    let rounds = std::env::var("BENCH_DENSE_RUNS").map_or(DENSE_RUNS, |r| {
+        r.parse().expect("BENCH_DENSE_RUNS: a number of runs")
+    });
+    let results = timed_rounds(&mut timed, rounds);
+    let mut records = Vec::new();
+    counts.push(timed.len());
+    for (i, (w, entry)) in workloads.iter().zip(&index).enumerate() {
+        let (at, runs) = (counts[i], counts[i + 1] - counts[i]);
+        for (run, (times, area)) in timed[at..at + runs].iter().zip(&results[at..at + runs]) {
+            let (ms, fastest) = (times[times.len() / 2], times[0]);
+            let peak = measure_memory
+                .then(|| peak_memory(run.name, w.name, w.n))
+                .flatten();
+            println!(
+                "{:>15} {:>6} {:<12} {:<10} {ms:>9.2} ms  (fastest {fastest:>8.2})  area {area:.6}  peak {}",
+                w.name,
+                w.n,
+                w.operation,
+                run.name,
+                peak.map_or("-".to_string(), |b| format!("{:.1} MB", b as f64 / 1e6))
+            );
+            records.push(json!({ "workload": w.name, "n": w.n, "operation": w.operation, "edges": entry["edges"],
+                "engine": run.name, "median_ms": ms, "area": area, "peak_bytes": peak }));
+        }
+    }
+    records
+}
+
+/// The peak memory of one engine's run of a dense workload: the bench started again in a process of its own
+/// (`polysweep-bench memory ENGINE WORKLOAD N`, see [`memory_child`]), so that no other run's memory counts. None
+/// where /proc is not there to say.
+fn peak_memory(engine: &str, workload: &str, n: usize) -> Option<u64> {
+    let output = std::process::Command::new(std::env::current_exe().ok()?)
+        .args(["memory", engine, workload, &n.to_string()])
+        .output()
+        .ok()?;
+    String::from_utf8(output.stdout).ok()?.trim().parse().ok()
+}
+
+/// One field of /proc/self/status, in bytes.
+fn status_bytes(field: &str) -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with(field))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
+}
+
+/// The child of [`peak_memory`]: builds the inputs, resets the peak of the resident set (Linux: 5 to
+/// /proc/self/clear_refs), runs the engine once and prints the peak's growth above the resident set before the run:
+/// what the operation itself touched, for Rust's allocator and for Clipper2's C++ alike.
+fn memory_child(engine_name: &str, workload: &str, n: usize) {
+    let w = dense::workloads(&[workload.to_string()], &[n])
+        .pop()
+        .expect("a dense workload and size");
+    let (a, b) = (Inputs::new(w.subject), Inputs::new(w.clip));
+    let (_, mut engine) = engines(w.operation, w.fill_rule, &a, &b)
+        .into_iter()
+        .find(|(name, _)| *name == engine_name)
+        .expect("an engine name");
+    let measured = (|| {
+        std::fs::write("/proc/self/clear_refs", "5").ok()?;
+        let before = status_bytes("VmRSS:")?;
+        std::hint::black_box(engine());
+        Some(status_bytes("VmHWM:")?.saturating_sub(before))
+    })();
+    if let Some(bytes) = measured {
+        println!("{bytes}");
+    }
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.first().map(String::as_str) == Some("memory") {
+        memory_child(&args[1], &args[2], args[3].parse().expect("a size"));
+        return;
+    }
+    let filter = Filter::from_args();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let out_dir = root.join("target/bench");
+    std::fs::create_dir_all(&out_dir).unwrap();
+    let (runs, floor) = if filter.workload("table1") {
+        table1(&filter, &out_dir)
+    } else {
+        Default::default()
+    };
+    let dense = dense_runs(
+        &filter,
+        &out_dir,
+        std::env::var("BENCH_MEMORY").as_deref() != Ok("0"),
+    );
     if filter.is_narrowed() {
         return;
     }
@@ -394,7 +601,7 @@ fn main() {
             )
             .unwrap_or_default()
     );
-    let report = json!({ "machine": machine, "runs": runs, "sort_floor": floor });
+    let report = json!({ "machine": machine, "runs": runs, "sort_floor": floor, "dense": dense });
     std::fs::write(
         out_dir.join("native.json"),
         serde_json::to_string_pretty(&report).unwrap(),

@@ -10,6 +10,7 @@
 use crate::edges::InputEdge;
 use crate::error::Error;
 use crate::events::MAX_EVENTS;
+use crate::exact::SweepPoint;
 use crate::geometry::MultiPolygon;
 use crate::input::{self, Bounds};
 use crate::options::Options;
@@ -262,8 +263,9 @@ fn sweep_once(
         events: sweep.events.len(),
         ..Stats::default()
     };
-    // Without constructed points nothing is rounded: the output is the exact arrangement.
-    let rounded = stats.crossings > 0;
+    // Without rounded points (no crossings, or only crossings of vertical and horizontal lines, as on grids) the
+    // output is the exact arrangement.
+    let rounded = stats.crossings > 0 && sweep.vertices.iter().any(SweepPoint::is_rounded);
     let suspect = rounded && (sweep.close_call || rounding::rounding_may_matter(&sweep.vertices));
     let events = &sweep.events;
     let (result, made_vertical) = connect::connect(

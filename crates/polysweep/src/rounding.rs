@@ -51,7 +51,8 @@ fn ulp(v: f64) -> f64 {
 }
 
 /// Could rounding have broken the output? Only where a rounded crossing point lands within a few ulps of another
-/// vertex of the result. An edge that passes that close to a crossing point crosses its edges there too, or ends
+/// vertex of the result (a crossing of a vertical and a horizontal line is not rounded: its coordinates are
+/// floats). An edge that passes that close to a crossing point crosses its edges there too, or ends
 /// there, so it has a vertex in the cluster as well; far from any cluster, rounding moves nothing across anything.
 pub(crate) fn rounding_may_matter(vertices: &[SweepPoint]) -> bool {
     // Sweep order is x order and rounding is monotone, so the vertices within a few ulps of a point in x are a
@@ -63,7 +64,7 @@ pub(crate) fn rounding_may_matter(vertices: &[SweepPoint]) -> bool {
     let mut runs: Vec<usize> = Vec::new();
     let ulp = |v: f64| clearance(v.abs());
     (0..vertices.len())
-        .filter(|&i| !vertices[i].is_input())
+        .filter(|&i| vertices[i].is_rounded())
         .any(|i| {
             let [x, y] = vertices[i].approx;
             let (dx, dy) = (ulp(x), ulp(y));
@@ -404,7 +405,7 @@ mod tests {
             vertices.sort_by(|p, q| exact.cmp_points(p, q));
             vertices.dedup_by(|p, q| exact.cmp_points(p, q) == Ordering::Equal);
             let every_pair = (0..vertices.len())
-                .filter(|&i| !vertices[i].is_input())
+                .filter(|&i| vertices[i].is_rounded())
                 .any(|i| {
                     let [x, y] = vertices[i].approx;
                     (0..vertices.len()).any(|j| {

@@ -34,14 +34,19 @@ type Double = (f64, f64);
 /// The correctly rounded coordinates of the crossing of the lines of `l` and `m` (not parallel), and which of them
 /// are known to be exact; `None` when float arithmetic cannot prove the rounding.
 pub(super) fn rounded_crossing(l: &Line, m: &Line) -> Option<([f64; 2], [bool; 2])> {
-    let along = parameters(l, m)?;
     let mut approx = [0.0; 2];
     let mut exact = [false; 2];
     for axis in 0..2 {
         if let Some(line) = [l, m].into_iter().find(|line| line.a[axis] == line.b[axis]) {
             (approx[axis], exact[axis]) = (line.a[axis] + 0.0, true); // -0 as 0, as the exact path gives
-            continue;
         }
+    }
+    if exact == [true, true] {
+        // A vertical line crossing a horizontal one, as on grids: no parameter to estimate.
+        return Some((approx, exact));
+    }
+    let along = parameters(l, m)?;
+    for axis in (0..2).filter(|&axis| !exact[axis]) {
         // λ's error shows in the coordinate multiplied by the line's extent along the axis.
         let spread = |i: usize| {
             let line = [l, m][i];

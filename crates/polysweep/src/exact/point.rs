@@ -65,6 +65,11 @@ impl SweepPoint {
         self.crossing() == INPUT
     }
 
+    /// Was this point rounded: a crossing with a coordinate that is not exactly its approximation?
+    pub fn is_rounded(&self) -> bool {
+        self.tag & (EXACT_X | EXACT_Y) != EXACT_X | EXACT_Y
+    }
+
     /// Is the coordinate on `axis` exactly `approx[axis]`?
     pub fn is_exact(&self, axis: usize) -> bool {
         self.tag & (EXACT_X << axis) != 0
