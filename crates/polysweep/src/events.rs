@@ -231,6 +231,8 @@ pub(crate) struct SortScratch {
     /// Per operand: more than two of its endpoints at one point, rings of it that touch or meet there or a ring
     /// that passes twice through it (read by [`crate::structure`]).
     pub shared_vertex: [bool; 2],
+    /// For each input edge, the edge it is merged into (see `merge_identical` in [`initial_events`]), or `NONE`.
+    pub merged_into: Vec<u32>,
 }
 
 /// Notes in `shared` each operand with more than two of the endpoints `at_one_point`: found where the sort already
@@ -260,8 +262,15 @@ pub(crate) fn initial_events(
     exact: &Exact,
     scratch: &mut SortScratch,
     mut events: Vec<SweepEvent>,
+    merge_identical: bool,
 ) -> Vec<SweepEvent> {
     scratch.shared_vertex = [false; 2];
+    let merged_into = &mut scratch.merged_into;
+    merged_into.clear();
+    let mut any_merged = false;
+    if merge_identical {
+        merged_into.resize(edges.len(), NONE);
+    }
     // An endpoint is `2 · edge + 1` for a left endpoint, `2 · edge` for a right one.
     let point = |end: u32| {
         let line = &edges[end as usize / 2].line;
@@ -321,28 +330,33 @@ pub(crate) fn initial_events(
             same_x.sort_unstable_by_key(|&(y, _)| y);
         }
         for same_point in same_x.chunk_by(|a, b| a.0 == b.0) {
+            // (A spike's two edges, merged where another ring meets one of its ends, may meet alone at the other:
+            // they take the path below, which leaves out the merged one's end.)
             if let [(_, ends)] = same_point {
-                // The usual case, one vertex at its point: its two endpoints in order, without a sort.
-                let ends = *ends;
-                if ends[1] == NONE {
-                    order.push(ends[0]);
+                if !(any_merged && has_merged_right_end(*ends, merged_into)) {
+                    // The usual case, one vertex at its point: its two endpoints in order, without a sort.
+                    let ends = *ends;
+                    if ends[1] == NONE {
+                        order.push(ends[0]);
+                        continue;
+                    }
+                    // Where the ring goes on through the vertex (one edge ends, the next begins), the right
+                    // endpoint comes first (§4): the lines need not be read. Which one that is, is a coin toss in x
+                    // order: the pair is put in order by a selection, not a branch.
+                    let (first_left, second_left) = (ends[0] % 2 == 1, ends[1] % 2 == 1);
+                    let second_first = if first_left != second_left {
+                        first_left
+                    } else {
+                        order_at_point(exact, &at_point(ends[1]), &at_point(ends[0]))
+                            == Ordering::Less
+                    };
+                    let (a, b) = (ends[0], ends[1]);
+                    order.extend([
+                        select_unpredictable(second_first, b, a),
+                        select_unpredictable(second_first, a, b),
+                    ]);
                     continue;
                 }
-                // Where the ring goes on through the vertex (one edge ends, the next begins), the right endpoint
-                // comes first (§4): the lines need not be read. Which one that is, is a coin toss in x order: the
-                // pair is put in order by a selection, not a branch.
-                let (first_left, second_left) = (ends[0] % 2 == 1, ends[1] % 2 == 1);
-                let second_first = if first_left != second_left {
-                    first_left
-                } else {
-                    order_at_point(exact, &at_point(ends[1]), &at_point(ends[0])) == Ordering::Less
-                };
-                let (a, b) = (ends[0], ends[1]);
-                order.extend([
-                    select_unpredictable(second_first, b, a),
-                    select_unpredictable(second_first, a, b),
-                ]);
-                continue;
             }
             at_one_point.clear();
             at_one_point.extend(
@@ -351,15 +365,22 @@ pub(crate) fn initial_events(
                     .filter(|&end| end != NONE),
             );
             note_shared_vertex(&mut scratch.shared_vertex, &at_one_point, edges);
+            if merge_identical {
+                // The right ends of edges merged at their left ends make no events.
+                at_one_point.retain(|&end| end % 2 == 1 || merged_into[end as usize / 2] == NONE);
+            }
             at_one_point
                 .sort_unstable_by(|&a, &b| order_at_point(exact, &at_point(a), &at_point(b)));
+            if merge_identical {
+                any_merged |= merge_at_point(&mut at_one_point, edges, exact, merged_into);
+            }
             order.extend_from_slice(&at_one_point);
         }
     }
     scratch.position.clear();
-    scratch.position.resize(order.len(), 0);
-    // (As slices, whose bounds stay in registers: through the vectors, a loop may read them again at every step,
-    // as it cannot tell that what it writes does not change them.)
+    scratch.position.resize(2 * edges.len(), 0); // (by endpoint: more than `order` where edges were merged)
+                                                 // (As slices, whose bounds stay in registers: through the vectors, a loop may read them again at every step,
+                                                 // as it cannot tell that what it writes does not change them.)
     let (order, position) = (scratch.order.as_slice(), scratch.position.as_mut_slice());
     for (i, &end) in order.iter().enumerate() {
         position[end as usize] = i as EventId;
@@ -374,7 +395,61 @@ pub(crate) fn initial_events(
         let other = position[end as usize ^ 1];
         SweepEvent::initial(&edges[segment as usize], segment, end % 2 == 1, other)
     }));
+    if any_merged {
+        for (merged, &kept) in scratch.merged_into.iter().enumerate() {
+            if kept != NONE {
+                let edge = &edges[merged];
+                for end in [2 * kept, 2 * kept + 1] {
+                    events[position[end as usize] as usize].winding[edge.operand as usize] +=
+                        edge.winding;
+                }
+            }
+        }
+    }
     events
+}
+
+/// Is either of `ends` the right end of an edge merged into another?
+#[cold]
+fn has_merged_right_end(ends: [u32; 2], merged_into: &[u32]) -> bool {
+    (ends.iter()).any(|&e| e != NONE && e % 2 == 0 && merged_into[e as usize / 2] != NONE)
+}
+
+/// §7.2 before the sweep: among the endpoints at one point, in event order, the left ends of edges identical to an
+/// edge before them (the same far end: they are collinear, so `order_at_point` put them in one run) are taken out
+/// and their edges noted in `merged_into` as merged into that edge, which carries their windings (as the sweep's
+/// merge of overlapping edges does, sooner: shared borders of parcel maps and boards are half their edges, each met
+/// once here instead of twice in S). Says whether any was merged.
+#[cold]
+#[inline(never)]
+fn merge_at_point(
+    at_one_point: &mut Vec<u32>,
+    edges: &[InputEdge],
+    exact: &Exact,
+    merged_into: &mut [u32],
+) -> bool {
+    let line = |end: u32| &edges[end as usize / 2].line;
+    let before = at_one_point.len();
+    let mut kept = 0;
+    for i in 0..at_one_point.len() {
+        let end = at_one_point[i];
+        if end % 2 == 1 {
+            // Edges identical to this one come right after it or after other edges on its line (the run of left
+            // ends collinear with it, going back): the first kept one with its far end takes it.
+            let far = SweepPoint::input(line(end).b);
+            let same = (at_one_point[..kept].iter().rev())
+                .take_while(|&&k| k % 2 == 1 && exact.orient(line(k), &far) == Ordering::Equal)
+                .find(|&&k| line(k).b == line(end).b);
+            if let Some(&k) = same {
+                merged_into[end as usize / 2] = k / 2;
+                continue;
+            }
+        }
+        at_one_point[kept] = end;
+        kept += 1;
+    }
+    at_one_point.truncate(kept);
+    kept < before
 }
 
 #[cfg(test)]
@@ -416,7 +491,7 @@ mod tests {
         add_edges(&mut edges, &subject, 0, |_| true);
         add_edges(&mut edges, &clipping, 1, |_| true);
         let exact = Exact::default();
-        let events = initial_events(&edges, &exact, &mut Default::default(), Vec::new());
+        let events = initial_events(&edges, &exact, &mut Default::default(), Vec::new(), false);
         assert_eq!(events.len(), 2 * edges.len());
         for i in 1..events.len() as EventId {
             assert_eq!(

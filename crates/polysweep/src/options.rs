@@ -63,6 +63,10 @@ pub struct Shortcuts {
     pub insert_after_last: bool,
     /// Two neighbours in S that start at one point, on two lines, are not tested for meeting elsewhere.
     pub shared_start: bool,
+    /// Identical edges (one segment in several rings, as the shared borders of a parcel map) become one edge
+    /// carrying all their windings when the events are made, rather than when they meet in S (§7.2). Not while the
+    /// structural reading watches the sweep, which must see edges of one operand meet.
+    pub merge_identical_edges: bool,
     /// Each thread keeps its working memory from one operation to the next.
     pub keep_working_memory: bool,
     /// Under the structural reading, an operation is first swept under even-odd, watched, and its operands read by
@@ -82,6 +86,7 @@ impl Shortcuts {
         successor_in_place: true,
         insert_after_last: true,
         shared_start: true,
+        merge_identical_edges: true,
         keep_working_memory: true,
         watch_structure: true,
     };
@@ -97,6 +102,7 @@ impl Shortcuts {
         successor_in_place: false,
         insert_after_last: false,
         shared_start: false,
+        merge_identical_edges: false,
         keep_working_memory: false,
         watch_structure: false,
     };

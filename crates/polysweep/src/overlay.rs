@@ -249,7 +249,9 @@ fn sweep_once(
     workspace: &mut Workspace,
     watch: Option<&mut Watch>,
 ) -> Result<(MultiPolygon, Stats, bool), Error> {
-    let mut sweep = start_sweep(edges, selection, pass, options, workspace)?;
+    let mut options = *options;
+    options.shortcuts.merge_identical_edges &= watch.is_none();
+    let mut sweep = start_sweep(edges, selection, pass, &options, workspace)?;
     sweep.watch = watch;
     sweep.run()?;
     if let Some(watch) = sweep.watch.as_deref_mut() {

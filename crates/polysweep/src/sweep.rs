@@ -122,6 +122,7 @@ impl<'a> Sweep<'a> {
             &exact,
             &mut workspace.sort,
             take(&mut workspace.events),
+            shortcuts.merge_identical_edges,
         );
         let queue = EventQueue::new(events.len());
         // Every vertex has two events at least (a ring vertex two, a crossing four): room for as many vertices as

@@ -144,7 +144,7 @@ fn valid_input_is_read_by_its_structure_without_a_structural_pass() {
 type Switch = (&'static str, fn(&mut Shortcuts));
 
 /// Each optimisation not in the paper, switched off.
-const SWITCHES: [Switch; 11] = [
+const SWITCHES: [Switch; 12] = [
     ("prune_by_boxes", |s| s.prune_by_boxes = false),
     ("prune_by_winding", |s| s.prune_by_winding = false),
     ("copy_inside", |s| s.copy_inside = false),
@@ -154,6 +154,7 @@ const SWITCHES: [Switch; 11] = [
     ("successor_in_place", |s| s.successor_in_place = false),
     ("insert_after_last", |s| s.insert_after_last = false),
     ("shared_start", |s| s.shared_start = false),
+    ("merge_identical_edges", |s| s.merge_identical_edges = false),
     ("keep_working_memory", |s| s.keep_working_memory = false),
     ("watch_structure", |s| s.watch_structure = false),
 ];
