@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The benchmark (issue 5): the paper's Table 1 on real land data, native and wasm, every engine in one run, then
-# the table (docs/benchmarks.md) and the chart (docs/benchmarks.svg). Installs what it needs first, as test.sh does
+# The benchmark (issue 5): the paper's Table 1 on real land data, native and wasm, every engine in one run, and the
+# dense workloads (issue 25), written by the native benchmark to target/bench/dense/ and run there and in Node; then
+# the tables (docs/benchmarks.md) and the chart (docs/benchmarks.svg). Installs what it needs first, as test.sh does
 # (the wasm target, wasm-bindgen-cli, the npm packages of the peers). Timings are medians of one run on this
 # machine; nothing here asserts them.
 set -euo pipefail
@@ -10,4 +11,5 @@ npm install --no-audit --no-fund
 cargo run --quiet --release -p polysweep-bench
 web/build.sh
 node web/bench/wasm.mjs
+node web/bench/dense.mjs
 node web/bench/report.mjs

@@ -122,3 +122,35 @@ export function vertexCount(polygons) {
   for (const polygon of polygons) for (const ring of polygon) n += ring.length - 1;
   return n;
 }
+
+// ---------------------------------------------------------------- dense workloads (issue 25) --------------------
+//
+// The native benchmark writes them (crates/polysweep-bench/src/dense.rs is their generator): an index of every
+// workload at every size, and one file per workload and size holding both operands.
+
+export const DENSE_DIR = join(BENCH_DIR, 'dense');
+
+/** The index: [{workload, n, operation, fill_rule, file, edges}], in the native benchmark's order; null when absent. */
+export function loadDenseIndex() {
+  const path = join(DENSE_DIR, 'index.json');
+  return existsSync(path) ? readJson(path) : null;
+}
+
+/** One dense workload at one size: {workload, n, operation, fill_rule, edges, subject, clip}. */
+export function loadDense(file) {
+  return readJson(join(DENSE_DIR, file));
+}
+
+/**
+ * The two operands of a benchmark input: {kind: 'table1', n} is land and the n squares, {kind: 'dense', file} a
+ * dense workload's subject and clip. Land is read once per process (callers copy what they hand to an engine).
+ */
+let land = null;
+export function loadOperands(input) {
+  if (input.kind === 'dense') {
+    const { subject, clip } = loadDense(input.file);
+    return [subject, clip];
+  }
+  land ??= loadLand().coordinates;
+  return [land, loadSquares(input.n).coordinates];
+}

@@ -2,16 +2,21 @@
 //
 //   const engine = await loadEngine(name);
 //   const input = engine.prepare ? engine.prepare(a, b) : [a, b];   // not timed (only polysweep-flat has one)
-//   const output = engine.run(operation, ...input);                   // timed: conversions in and out included
+//   const output = engine.run(operation, ...input, fillRule);         // timed: conversions in and out included
 //   engine.area(output)                                                // not timed
 //
 // `a` and `b` are GeoJSON MultiPolygon coordinates (JavaScript arrays); every engine but polysweep-flat returns
 // GeoJSON MultiPolygon coordinates (polygons of closed rings, exterior first), so each does the same work a user
-// of it would do to go from GeoJSON to GeoJSON. Fill rule: even-odd everywhere (the inputs do not self-overlap).
+// of it would do to go from GeoJSON to GeoJSON. Operations: 'intersection', 'union', 'difference', 'xor'.
+//
+// Fill rule: 'evenodd' or 'nonzero', how each operand's rings define its interior. Omitted (Table 1, whose inputs
+// do not overlap themselves): even-odd for the peers, the npm package's default (the structural reading, the same
+// regions as even-odd on such input) for polysweep. The engines of READS_RINGS_ONLY take no fill rule: they read
+// each ring's region, which is even-odd's on operands that do not overlap themselves, and cannot run 'nonzero'.
 
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
-import { join } from 'node:path';
+import { dirname, join } from 'node:path';
 import { ROOT, multiPolygonArea } from './data.mjs';
 
 const require = createRequire(import.meta.url);
@@ -22,10 +27,20 @@ export const ENGINES = [
   'polysweep-flat',
   'clipper2-wasm',
   'js-angusj-clipper',
+  'clipper2-ts',
+  'ishape_wasm',
   'martinez-polygon-clipping',
   'polygon-clipping',
   'polyclip-ts',
 ];
+
+/** Engines without a fill rule (see above). */
+export const READS_RINGS_ONLY = new Set(['martinez-polygon-clipping', 'polygon-clipping', 'polyclip-ts']);
+
+/** Whether an engine can read its operands by this fill rule (undefined: Table 1's reading, which all can). */
+export function takesFillRule(engine, fillRule) {
+  return fillRule === undefined || fillRule === 'evenodd' || !READS_RINGS_ONLY.has(engine);
+}
 
 /** npm package of each engine (for its version). */
 export const PACKAGE_OF = {
@@ -33,6 +48,8 @@ export const PACKAGE_OF = {
   'polysweep-flat': 'polysweep',
   'clipper2-wasm': 'clipper2-wasm',
   'js-angusj-clipper': 'js-angusj-clipper',
+  'clipper2-ts': 'clipper2-ts',
+  ishape_wasm: 'ishape_wasm',
   'martinez-polygon-clipping': 'martinez-polygon-clipping',
   'polygon-clipping': 'polygon-clipping',
   'polyclip-ts': 'polyclip-ts',
@@ -52,10 +69,12 @@ export const CLIPPER1_SCALE = 2 ** 22;
 
 /** How each engine is set up and what its conversions are, for the report. */
 export const NOTES = {
-  polysweep: 'npm package pkg/ (wasm); GeoJSON coordinates in and out through its polygon-clipping-style API',
+  polysweep: 'npm package pkg/ (wasm); GeoJSON coordinates in and out through its polygon-clipping-style API (fill rule: the package default in Table 1, the workload\'s rule in the dense workloads)',
   'polysweep-flat': 'same package, overlayFlat: typed arrays in and out (GeoJSON→flat conversion not timed); informational, not a peer',
-  'clipper2-wasm': `ClipperD via BooleanOpOutD (PolyTreeD for holes), precision ${CLIPPER2_PRECISION} decimals, even-odd; rings copied into PathD with assign(Float64Array), results read with view(); closing vertex dropped in, added out`,
-  'js-angusj-clipper': `Clipper 1 (wasm), clipToPolyTree, even-odd, coordinates scaled by 2^22 and rounded to integers (±2^30 range); closing vertex dropped in, added out`,
+  'clipper2-wasm': `ClipperD via BooleanOpOutD (PolyTreeD for holes), precision ${CLIPPER2_PRECISION} decimals, even-odd (non-zero where a dense workload says so); rings copied into PathD with assign(Float64Array), results read with view(); closing vertex dropped in, added out`,
+  'js-angusj-clipper': `Clipper 1 (wasm), clipToPolyTree, even-odd (non-zero where a dense workload says so), coordinates scaled by 2^22 and rounded to integers (within ±2^30 on land, where Clipper needs no 128-bit products; beyond it on the larger dense inputs, where a scale keeping them within was measured no faster); closing vertex dropped in, added out`,
+  'clipper2-ts': `Clipper2 ported to TypeScript: ClipperD into a PolyTreeD (holes as children), precision ${CLIPPER2_PRECISION} decimals, even-odd (non-zero where a dense workload says so); rings copied into {x, y} points, closing vertex dropped in, added out`,
+  ishape_wasm: 'i_overlay (Rust) in wasm: Overlay.new_with_subj_and_clip on the coordinate arrays (its float API, which rounds to an integer grid over the operands\' bounding box), overlay(rule, fill rule); shapes come back as outer ring then holes, open: the closing vertex is added',
   'martinez-polygon-clipping': 'GeoJSON coordinates in and out (a Polygon-shaped or null result is normalised to MultiPolygon coordinates)',
   'polygon-clipping': 'GeoJSON coordinates in and out',
   'polyclip-ts': 'GeoJSON coordinates in and out (bignumber.js arithmetic)',
@@ -76,7 +95,7 @@ function openLength(ring) {
 async function polysweep() {
   const ps = await import('polysweep');
   return {
-    run: (op, a, b) => ps[op](a, b),
+    run: (op, a, b, fillRule) => (fillRule ? ps[op](a, b, { fillRule }) : ps[op](a, b)),
     area: multiPolygonArea,
   };
 }
@@ -128,7 +147,7 @@ async function polysweepFlat() {
   const ps = await import('polysweep');
   return {
     prepare: (a, b) => [flatOf(a), flatOf(b)],
-    run: (op, a, b) => ps.overlayFlat(op, [a, b]),
+    run: (op, a, b, fillRule) => ps.overlayFlat(op, [a, b], fillRule ? { fillRule } : undefined),
     area: flatArea,
   };
 }
@@ -138,7 +157,8 @@ async function polysweepFlat() {
 async function clipper2() {
   const { default: Clipper2Z } = await import('clipper2-wasm/dist/es/clipper2z.js');
   const C = await Clipper2Z();
-  const CLIP = { intersection: C.ClipType.Intersection, union: C.ClipType.Union, difference: C.ClipType.Difference };
+  const CLIP = { intersection: C.ClipType.Intersection, union: C.ClipType.Union, difference: C.ClipType.Difference, xor: C.ClipType.Xor };
+  const FILL = { evenodd: C.FillRule.EvenOdd, nonzero: C.FillRule.NonZero };
 
   function toPathsD(polygons) {
     const paths = new C.PathsD();
@@ -182,12 +202,12 @@ async function clipper2() {
   }
 
   return {
-    run(op, a, b) {
+    run(op, a, b, fillRule = 'evenodd') {
       const subjects = toPathsD(a);
       const clips = toPathsD(b);
       const tree = new C.PolyPathD();
       try {
-        C.BooleanOpOutD(CLIP[op], C.FillRule.EvenOdd, subjects, clips, tree, CLIPPER2_PRECISION);
+        C.BooleanOpOutD(CLIP[op], FILL[fillRule], subjects, clips, tree, CLIPPER2_PRECISION);
         const out = [];
         for (let i = 0, n = tree.count(); i < n; i++) collect(tree.child(i), out);
         return out;
@@ -207,7 +227,8 @@ async function angusjClipper() {
   const lib = require('js-angusj-clipper');
   const clipper = await lib.loadNativeClipperLibInstanceAsync(lib.NativeClipperLibRequestedFormat.WasmOnly);
   const S = CLIPPER1_SCALE;
-  const CLIP = { intersection: lib.ClipType.Intersection, union: lib.ClipType.Union, difference: lib.ClipType.Difference };
+  const CLIP = { intersection: lib.ClipType.Intersection, union: lib.ClipType.Union, difference: lib.ClipType.Difference, xor: lib.ClipType.Xor };
+  const FILL = { evenodd: lib.PolyFillType.EvenOdd, nonzero: lib.PolyFillType.NonZero };
 
   function toPaths(polygons) {
     const paths = [];
@@ -240,13 +261,13 @@ async function angusjClipper() {
   }
 
   return {
-    run(op, a, b) {
+    run(op, a, b, fillRule = 'evenodd') {
       const tree = clipper.clipToPolyTree({
         clipType: CLIP[op],
         subjectInputs: [{ data: toPaths(a), closed: true }],
         clipInputs: [{ data: toPaths(b) }],
-        subjectFillType: lib.PolyFillType.EvenOdd,
-        clipFillType: lib.PolyFillType.EvenOdd,
+        subjectFillType: FILL[fillRule],
+        clipFillType: FILL[fillRule],
       });
       const out = [];
       for (const outer of tree.childs) collect(outer, out);
@@ -258,9 +279,80 @@ async function angusjClipper() {
 
 // ---------------------------------------------------------------------------------------------------------------
 
+async function clipper2Ts() {
+  const C = await import('clipper2-ts');
+  const CLIP = { intersection: C.ClipType.Intersection, union: C.ClipType.Union, difference: C.ClipType.Difference, xor: C.ClipType.Xor };
+  const FILL = { evenodd: C.FillRule.EvenOdd, nonzero: C.FillRule.NonZero };
+
+  function toPathsD(polygons) {
+    const paths = [];
+    for (const polygon of polygons) {
+      for (const ring of polygon) {
+        const n = openLength(ring);
+        const path = new Array(n);
+        for (let i = 0; i < n; i++) path[i] = { x: ring[i][0], y: ring[i][1] };
+        paths.push(path);
+      }
+    }
+    return paths;
+  }
+
+  function ringOf(path) {
+    const ring = path.map((p) => [p.x, p.y]);
+    return closeRing(ring);
+  }
+
+  function collect(outer, out) {
+    // As clipper2-wasm's tree: an exterior's children are holes, whose children are exteriors again.
+    const polygon = [ringOf(outer.poly)];
+    for (let h = 0; h < outer.count; h++) {
+      const hole = outer.child(h);
+      polygon.push(ringOf(hole.poly));
+      for (let k = 0; k < hole.count; k++) collect(hole.child(k), out);
+    }
+    out.push(polygon);
+  }
+
+  return {
+    run(op, a, b, fillRule = 'evenodd') {
+      const clipper = new C.ClipperD(CLIPPER2_PRECISION);
+      clipper.addSubjectPaths(toPathsD(a));
+      clipper.addClipPaths(toPathsD(b));
+      const tree = new C.PolyTreeD();
+      if (!clipper.execute(CLIP[op], FILL[fillRule], tree)) throw new Error('ClipperD.execute failed');
+      const out = [];
+      for (let i = 0; i < tree.count; i++) collect(tree.child(i), out);
+      return out;
+    },
+    area: multiPolygonArea,
+  };
+}
+
+async function ishape() {
+  const lib = await import('ishape_wasm');
+  // The package loads its wasm with fetch() unless given the bytes; Node's fetch takes no file: URLs.
+  lib.initSync({ module: readFileSync(join(dirname(require.resolve('ishape_wasm')), 'ishape_wasm_bg.wasm')) });
+  const RULE = { intersection: lib.OverlayRule.Intersect, union: lib.OverlayRule.Union, difference: lib.OverlayRule.Difference, xor: lib.OverlayRule.Xor };
+  const FILL = { evenodd: lib.FillRule.EvenOdd, nonzero: lib.FillRule.NonZero };
+  return {
+    run(op, a, b, fillRule = 'evenodd') {
+      // Shapes in (polygons of rings; a closing vertex is harmless), shapes out: the outer ring, then its holes,
+      // open. `overlay` consumes the Overlay; no free() after it.
+      const overlay = lib.Overlay.new_with_subj_and_clip(a, b);
+      if (!overlay) throw new Error('Overlay.new_with_subj_and_clip returned nothing');
+      const shapes = overlay.overlay(RULE[op], FILL[fillRule]);
+      for (const shape of shapes) for (const ring of shape) closeRing(ring);
+      return shapes;
+    },
+    area: multiPolygonArea,
+  };
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+
 async function martinez() {
   const m = await import('martinez-polygon-clipping');
-  const fn = { intersection: m.intersection, union: m.union, difference: m.diff };
+  const fn = { intersection: m.intersection, union: m.union, difference: m.diff, xor: m.xor };
   return {
     run(op, a, b) {
       const result = fn[op](a, b);
@@ -287,6 +379,8 @@ const LOADERS = {
   'polysweep-flat': polysweepFlat,
   'clipper2-wasm': clipper2,
   'js-angusj-clipper': angusjClipper,
+  'clipper2-ts': clipper2Ts,
+  ishape_wasm: ishape,
   'martinez-polygon-clipping': martinez,
   'polygon-clipping': polygonClipping,
   'polyclip-ts': polyclipTs,

@@ -40,6 +40,8 @@ const REFERENCE: [(usize, f64); 4] = [
 const RUNS: usize = 21;
 /// Timed runs of each dense workload (`BENCH_DENSE_RUNS` overrides it): fewer, as the largest take seconds.
 const DENSE_RUNS: usize = 7;
+/// A run slower than this (in ms) is timed once (see [`timed_rounds`]).
+const SLOW_MS: f64 = 2000.0;
 
 /// Clipper2 works on integers: coordinates scaled by 10^8, its finest documented precision.
 #[derive(Debug, Default, Clone, Copy, PartialEq, Hash)]
@@ -96,7 +98,16 @@ fn squares(n: usize) -> Coordinates {
 /// taken workload by workload instead, a slow phase that fell on one size moved the scaling slopes of all engines
 /// by more than their difference. Returns each run's times, sorted, and area (of the first warm-up).
 fn timed_rounds(runs: &mut [Run], rounds: usize) -> Vec<(Vec<f64>, f64)> {
-    let areas: Vec<f64> = runs.iter_mut().map(|r| (r.engine)()).collect();
+    // The first run gives the area, and its time: a run slower than `SLOW_MS` (Clipper2 on the larger nested
+    // squares takes minutes) is not repeated, and that time is its only one.
+    let first: Vec<(f64, f64)> = (runs.iter_mut())
+        .map(|r| {
+            let start = Instant::now();
+            let area = (r.engine)();
+            (area, start.elapsed().as_secs_f64() * 1e3)
+        })
+        .collect();
+    let areas: Vec<f64> = first.iter().map(|&(area, _)| area).collect();
     let mut times = vec![Vec::with_capacity(rounds); runs.len()];
     let mut order: Vec<usize> = (0..runs.len()).collect();
     // xorshift64: any fixed sequence of shuffles will do, the same in every benchmark run.
@@ -111,14 +122,17 @@ fn timed_rounds(runs: &mut [Run], rounds: usize) -> Vec<(Vec<f64>, f64)> {
         for i in (1..order.len()).rev() {
             order.swap(i, (random() % (i as u64 + 1)) as usize);
         }
-        for &run in &order {
+        for &run in order.iter().filter(|&&run| first[run].1 <= SLOW_MS) {
             std::hint::black_box((runs[run].engine)());
             let start = Instant::now();
             std::hint::black_box((runs[run].engine)());
             times[run].push(start.elapsed().as_secs_f64() * 1e3);
         }
     }
-    for t in &mut times {
+    for (t, &(_, ms)) in times.iter_mut().zip(&first) {
+        if t.is_empty() {
+            t.push(ms);
+        }
         t.sort_by(f64::total_cmp);
     }
     times.into_iter().zip(areas).collect()
