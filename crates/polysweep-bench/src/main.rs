@@ -13,6 +13,7 @@
 //! under the structural reading (the npm package's default) instead of even-odd.
 
 mod dense;
+mod memory;
 
 use geo::algorithm::bool_ops::{FillRule as GeoFillRule, OpType};
 use geo::{Area, BooleanOps};
@@ -461,7 +462,7 @@ fn table1(filter: &Filter, out_dir: &Path) -> (Vec<Value>, Vec<Value>) {
 }
 
 /// The dense workloads (see `dense`): every engine at every size, timed in rounds as Table 1, then each engine's
-/// peak memory in a process of its own (see [`peak_memory`]). Writes each workload's operands to
+/// peak memory in a process of its own (see [`memory::peak_memory`]). Writes each workload's operands to
 /// target/bench/dense/ for the wasm benchmark.
 fn dense_runs(filter: &Filter, out_dir: &Path, measure_memory: bool) -> Vec<Value> {
     let dir = out_dir.join("dense");
@@ -516,7 +517,7 @@ fn dense_runs(filter: &Filter, out_dir: &Path, measure_memory: bool) -> Vec<Valu
         for (run, (times, area)) in timed[at..at + runs].iter().zip(&results[at..at + runs]) {
             let (ms, fastest) = (times[times.len() / 2], times[0]);
             let peak = measure_memory
-                .then(|| peak_memory(run.name, w.name, w.n))
+                .then(|| memory::peak_memory(run.name, w.name, w.n))
                 .flatten();
             println!(
                 "{:>15} {:>6} {:<12} {:<10} {ms:>9.2} ms  (fastest {fastest:>8.2})  area {area:.6}  peak {}",
@@ -533,52 +534,10 @@ fn dense_runs(filter: &Filter, out_dir: &Path, measure_memory: bool) -> Vec<Valu
     records
 }
 
-/// The peak memory of one engine's run of a dense workload: the bench started again in a process of its own
-/// (`polysweep-bench memory ENGINE WORKLOAD N`, see [`memory_child`]), so that no other run's memory counts. None
-/// where /proc is not there to say.
-fn peak_memory(engine: &str, workload: &str, n: usize) -> Option<u64> {
-    let output = std::process::Command::new(std::env::current_exe().ok()?)
-        .args(["memory", engine, workload, &n.to_string()])
-        .output()
-        .ok()?;
-    String::from_utf8(output.stdout).ok()?.trim().parse().ok()
-}
-
-/// One field of /proc/self/status, in bytes.
-fn status_bytes(field: &str) -> Option<u64> {
-    let status = std::fs::read_to_string("/proc/self/status").ok()?;
-    let line = status.lines().find(|l| l.starts_with(field))?;
-    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
-    Some(kib * 1024)
-}
-
-/// The child of [`peak_memory`]: builds the inputs, resets the peak of the resident set (Linux: 5 to
-/// /proc/self/clear_refs), runs the engine once and prints the peak's growth above the resident set before the run:
-/// what the operation itself touched, for Rust's allocator and for Clipper2's C++ alike.
-fn memory_child(engine_name: &str, workload: &str, n: usize) {
-    let w = dense::workloads(&[workload.to_string()], &[n])
-        .pop()
-        .expect("a dense workload and size");
-    let (a, b) = (Inputs::new(w.subject), Inputs::new(w.clip));
-    let (_, mut engine) = engines(w.operation, w.fill_rule, &a, &b)
-        .into_iter()
-        .find(|(name, _)| *name == engine_name)
-        .expect("an engine name");
-    let measured = (|| {
-        std::fs::write("/proc/self/clear_refs", "5").ok()?;
-        let before = status_bytes("VmRSS:")?;
-        std::hint::black_box(engine());
-        Some(status_bytes("VmHWM:")?.saturating_sub(before))
-    })();
-    if let Some(bytes) = measured {
-        println!("{bytes}");
-    }
-}
-
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     if args.first().map(String::as_str) == Some("memory") {
-        memory_child(&args[1], &args[2], args[3].parse().expect("a size"));
+        memory::memory_child(&args[1], &args[2], args[3].parse().expect("a size"));
         return;
     }
     let filter = Filter::from_args();

@@ -378,9 +378,10 @@ pub(crate) fn initial_events(
         }
     }
     scratch.position.clear();
-    scratch.position.resize(2 * edges.len(), 0); // (by endpoint: more than `order` where edges were merged)
-                                                 // (As slices, whose bounds stay in registers: through the vectors, a loop may read them again at every step,
-                                                 // as it cannot tell that what it writes does not change them.)
+    // By endpoint: more than `order` where edges were merged.
+    scratch.position.resize(2 * edges.len(), 0);
+    // (As slices, whose bounds stay in registers: through the vectors, a loop may read them again at every step,
+    // as it cannot tell that what it writes does not change them.)
     let (order, position) = (scratch.order.as_slice(), scratch.position.as_mut_slice());
     for (i, &end) in order.iter().enumerate() {
         position[end as usize] = i as EventId;
