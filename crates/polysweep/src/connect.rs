@@ -97,8 +97,9 @@ impl Rings {
     }
 }
 
-/// Walks the result edges into simple rings, each as its list of edge indices.
-fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge]) -> Rings {
+/// Walks the result edges into simple rings, each as its list of edge indices; with `class` (one per edge, or
+/// none), each ring of edges of one class.
+fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge], class: &[u32]) -> Rings {
     // Edges leaving each vertex, bucketed (counting sort by `from`).
     let mut first_out = vec![0usize; vertex_count + 1];
     for e in edges {
@@ -154,7 +155,9 @@ fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge]) -> Rings 
                 path_vertices.push(v);
             }
             let range = first_out[v as usize]..first_out[v as usize + 1];
-            let candidates = outgoing[range].iter().copied().filter(|&i| !used[i]);
+            let same_class = |i: usize| class.is_empty() || class[i] == class[current];
+            let candidates =
+                (outgoing[range].iter().copied()).filter(|&i| !used[i] && same_class(i));
             match next_edge(lines, edges, current, candidates) {
                 Some(next) => current = next,
                 // Cannot happen: every vertex has as many result edges in as out. Drop the open path.
@@ -168,12 +171,20 @@ fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge]) -> Rings 
     rings
 }
 
-/// The polygon with the smallest exterior that contains `hole`, by exact point-in-ring tests of its vertices.
-fn innermost_shell_around(polygons: &[Polygon], hole: &[Point]) -> Option<usize> {
+/// The polygon with the smallest exterior that contains `hole`, by exact point-in-ring tests of its vertices, among
+/// those `candidate` accepts.
+fn innermost_shell_around(
+    polygons: &[Polygon],
+    hole: &[Point],
+    candidate: impl Fn(usize) -> bool,
+) -> Option<usize> {
     polygons
         .iter()
         .enumerate()
-        .filter(|(_, p)| {
+        .filter(|&(i, p)| {
+            if !candidate(i) {
+                return false;
+            }
             let side = hole
                 .iter()
                 .map(|&v| crate::validate::locate(&p.exterior, v))
@@ -197,6 +208,21 @@ pub(crate) fn connect(
     edges: &mut [ResultEdge],
     below_edge: impl Fn(u32) -> u32,
 ) -> (MultiPolygon, bool) {
+    let (result, _, made_vertical) =
+        connect_classes(exact, input, vertices, edges, below_edge, &[]);
+    (result, made_vertical)
+}
+
+/// [`connect`] where every edge has a class (`class`, one per edge; empty: all one class): rings are walked
+/// along edges of one class, holes join polygons of their class, and the class of each polygon is returned too.
+pub(crate) fn connect_classes(
+    exact: &Exact,
+    input: &[InputEdge],
+    vertices: &[SweepPoint],
+    edges: &mut [ResultEdge],
+    below_edge: impl Fn(u32) -> u32,
+    class: &[u32],
+) -> (MultiPolygon, Vec<u32>, bool) {
     let (vertex_ids, points, x_rounded_onto_another) = merge_rounded(vertices, edges);
     // The exact vertices of each edge, before rounding merges some of them.
     let exact_ends: Vec<(u32, u32)> = edges.iter().map(|e| (e.from, e.to)).collect();
@@ -205,7 +231,8 @@ pub(crate) fn connect(
         e.to = vertex_ids[e.to as usize];
     }
     let lines = Lines { exact, input };
-    let rings = walk_rings(lines, points.len(), edges);
+    let rings = walk_rings(lines, points.len(), edges, class);
+    let class_of_ring = |ring: &[usize]| class.get(ring[0]).copied().unwrap_or(0);
     let mut ring_of_edge = vec![NONE; edges.len()];
     for (r, ring) in rings.iter().enumerate() {
         for &e in ring {
@@ -289,9 +316,13 @@ pub(crate) fn connect(
     };
     let mut polygon_of_ring = vec![NONE; rings.len()];
     let mut polygons: Vec<Polygon> = Vec::with_capacity(rings.len());
+    let mut polygon_class = Vec::new();
     for (r, ring) in rings.iter().enumerate() {
         if is_shell(r as u32) && ring.len() >= 3 {
             polygon_of_ring[r] = polygons.len() as u32;
+            if !class.is_empty() {
+                polygon_class.push(class_of_ring(ring));
+            }
             polygons.push(Polygon {
                 exterior: std::mem::take(&mut written[r]),
                 holes: Vec::new(),
@@ -314,7 +345,11 @@ pub(crate) fn connect(
         let polygon = match owner.filter(|&o| is_shell(o) && polygon_of_ring[o as usize] != NONE) {
             Some(shell) => Some(polygon_of_ring[shell as usize] as usize),
             // The edge below was one that rounding shrank to a point: find the shell by position instead.
-            None => innermost_shell_around(&polygons, &hole),
+            None => innermost_shell_around(&polygons, &hole, |p| {
+                polygon_class
+                    .get(p)
+                    .is_none_or(|&c| c == class_of_ring(ring))
+            }),
         };
         // No shell around a hole happens only where rounding inverted a sliver next to it (docs/robustness.md,
         // known limit); the strict tests check membership, so a hole lost otherwise would not go unnoticed.
@@ -323,5 +358,5 @@ pub(crate) fn connect(
         }
     }
     let made_vertical = x_rounded_onto_another && rounding_made_vertical(input, edges, &points);
-    (MultiPolygon(polygons), made_vertical)
+    (MultiPolygon(polygons), polygon_class, made_vertical)
 }

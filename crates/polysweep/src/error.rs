@@ -51,6 +51,22 @@ impl Error {
             Error::TooLarge { .. } | Error::OutOfMemory { .. } => None,
         }
     }
+
+    /// This error with its location renumbered by `renumber` (where an operation's operands are parts of the
+    /// caller's: features of a layer, lines).
+    pub(crate) fn relocated(self, renumber: impl FnOnce(Location) -> Location) -> Error {
+        match self {
+            Error::NonFiniteCoordinate { at, value } => Error::NonFiniteCoordinate {
+                at: renumber(at),
+                value,
+            },
+            Error::CoordinateOutOfRange { at, value } => Error::CoordinateOutOfRange {
+                at: renumber(at),
+                value,
+            },
+            other => other,
+        }
+    }
 }
 
 impl fmt::Display for Error {

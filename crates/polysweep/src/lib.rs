@@ -51,10 +51,13 @@
 //! [`robustness`] page.
 
 // The stages, in the order an operation goes through them (see docs/architecture.md).
+mod arrangement;
 mod connect;
 mod edges;
 mod events;
 mod input;
+mod layers;
+mod lines;
 mod overlay;
 mod prune;
 mod rounding;
@@ -102,6 +105,8 @@ pub mod robustness {}
 pub use error::{Error, Location};
 pub use geometry::{ring_area, MultiPolygon, Point, Polygon, Ring};
 pub use geometry::{MAX_COORDINATE, MIN_COORDINATE};
+pub use layers::{dissolve, overlay_layers, LayerFace, LayerMode};
+pub use lines::{clip, split, Boundary, ClipOptions, Keep, LineString};
 pub use options::Options;
 #[doc(hidden)]
 pub use options::Shortcuts;

@@ -93,6 +93,9 @@ pub(crate) enum Selection {
     /// operands containing a region (for a difference: the subject), slot 1 the clipping operands of a
     /// difference. `operands` is how many there are in slot 0.
     Count { operation: Operation, operands: i32 },
+    /// Every edge, whatever lies on either side: the arrangement of all the edges, whose faces
+    /// [`crate::arrangement`] reads (lines and layers).
+    Arrangement,
 }
 
 impl Selection {
@@ -114,6 +117,7 @@ impl Selection {
                 Operation::Xor => coverage[0] % 2 != 0,
                 Operation::Difference => coverage[0] > 0 && coverage[1] <= 0,
             },
+            Selection::Arrangement => false,
         }
     }
 
@@ -143,7 +147,8 @@ impl Selection {
         Flags {
             coverage_above: if vertical { coverage_below } else { crossed },
             result_above,
-            in_result: self.in_result(coverage_below) != result_above,
+            in_result: matches!(self, Selection::Arrangement)
+                || self.in_result(coverage_below) != result_above,
             result_below,
         }
     }

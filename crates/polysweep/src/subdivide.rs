@@ -162,6 +162,9 @@ impl Sweep<'_> {
         self.events.push(base.fragment(p, true, right));
         self.events[edge as usize].set_other(new_right);
         self.events[right as usize].set_other(new_left);
+        if let Some(sources) = &mut self.sources {
+            sources.split(edge);
+        }
         debug_assert_ne!(base.node(), NONE, "split of an edge not in S");
         self.status.key_mut(base.node()).right = p;
         new_right
@@ -173,6 +176,10 @@ impl Sweep<'_> {
         let winding = self.event(merged).winding;
         for (w, m) in self.events[keep as usize].winding.iter_mut().zip(winding) {
             *w += m;
+        }
+        if let Some(sources) = &mut self.sources {
+            let segments = [keep, merged].map(|e| self.events[e as usize].segment());
+            sources.merge(keep, merged, segments);
         }
         self.status.remove(self.event(merged).node());
         self.events[merged as usize].leave_status();

@@ -35,6 +35,7 @@
 //! popping Q) are `#[inline(always)]`: as calls, their arguments and results went through memory (see
 //! docs/benchmarks.md).
 
+use crate::arrangement::Sources;
 use crate::edges::{EventId, InputEdge, Operand, ResultEdge, NONE};
 use crate::events::{
     event_order, far_point, initial_events, EventQueue, Head, SweepEvent, MAX_EVENTS,
@@ -103,6 +104,9 @@ pub(crate) struct Sweep<'a> {
     pub shortcuts: Shortcuts,
     /// What the structural reading's check watches, when it is on (see [`crate::structure`]).
     pub watch: Option<&'a mut Watch>,
+    /// For an arrangement sweep only (see [`crate::arrangement`]): which input segments lie on each edge, and every
+    /// edge recorded as a fragment when it leaves S, instead of the result edges.
+    pub sources: Option<Sources>,
 }
 
 impl<'a> Sweep<'a> {
@@ -151,6 +155,7 @@ impl<'a> Sweep<'a> {
             stopped: None,
             shortcuts,
             watch: None,
+            sources: None,
         }
     }
 
@@ -262,7 +267,8 @@ impl<'a> Sweep<'a> {
                 && self.status.room(count)
                 && self.exact.room(1)
                 && room(&mut self.vertices, count)
-                && room(&mut self.result, count))
+                && room(&mut self.result, count)
+                && (self.sources.as_mut()).is_none_or(|s| s.room(count)))
             {
                 self.stopped = Some(Error::OutOfMemory {
                     edges: self.edges.len(),
@@ -465,6 +471,12 @@ impl<'a> Sweep<'a> {
         let edge = *self.status.key(node);
         if edge.flags.in_result {
             let (from, to) = (edge.vertex, self.current_vertex());
+            if let Some(sources) = &mut self.sources {
+                let winding = self.events[l as usize].winding;
+                let index = sources.record(l, [from, to], edge.segment, winding, &edge.flags);
+                self.events[l as usize].record(index);
+                return;
+            }
             let forward = edge.flags.result_above;
             let result_edge = ResultEdge {
                 from: if forward { from } else { to },

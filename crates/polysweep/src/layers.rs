@@ -1,0 +1,212 @@
+//! Overlaying two layers of features, each output face knowing the features that cover it; and dissolving features
+//! by a key (not in the paper, whose §1 names such overlays as its purpose: sea ice, biomes, watersheds).
+//!
+//! Each feature is first made a valid polygon set by a sweep of its own (as [`crate::overlay_all`] does its
+//! operands), so that its boundary, crossed anywhere, takes it away or adds it. Then one sweep of the arrangement of
+//! both layers ([`crate::arrangement`]) knows, above every fragment, the set of features there: the set above the
+//! fragment below, with the features whose boundary the fragment lies on taken away or added. A face's set is the
+//! set on the left of its half-edges, and faces of one set that share an edge are one polygon. The cost is a sweep
+//! of each feature, one of both layers together, and the output: not one operation per pair of features.
+
+use crate::arrangement::Arrangement;
+use crate::edges::NONE;
+use crate::error::{Error, Location};
+use crate::geometry::MultiPolygon;
+use crate::input::{self, Bounds};
+use crate::lines::readable;
+use crate::options::Options;
+use crate::overlay::sweep;
+use crate::select::{Operation, Selection};
+use crate::workspace;
+use std::collections::HashMap;
+use std::hash::Hash;
+
+/// Which faces of two layers' overlay [`overlay_layers`] returns, by the features that cover them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum LayerMode {
+    /// Covered by a feature of each layer.
+    #[default]
+    Intersection,
+    /// Covered by any feature.
+    Union,
+    /// Covered by a feature of the first layer: the first layer split by the second.
+    Identity,
+    /// Covered by a feature of the first layer and none of the second.
+    Difference,
+    /// Covered by features of one layer only.
+    Xor,
+}
+
+impl LayerMode {
+    fn keeps(self, in_a: bool, in_b: bool) -> bool {
+        match self {
+            LayerMode::Intersection => in_a && in_b,
+            LayerMode::Union => in_a || in_b,
+            LayerMode::Identity => in_a,
+            LayerMode::Difference => in_a && !in_b,
+            LayerMode::Xor => in_a != in_b,
+        }
+    }
+}
+
+/// A face of two layers' overlay: the features of each layer that cover it (indices into the layers, in
+/// increasing order), and where it is: every point covered by exactly those features, as polygons (faces with
+/// these features that share an edge are one polygon; touching at a point, two).
+#[derive(Clone, Debug, PartialEq)]
+pub struct LayerFace {
+    pub a: Vec<u32>,
+    pub b: Vec<u32>,
+    pub polygons: MultiPolygon,
+}
+
+/// The overlay of layers `a` and `b`, each a list of features (polygon sets, each read by `options.fill_rule`):
+/// the faces that `mode` keeps, each with the features covering it, sorted by those features (`a`, then `b`). The
+/// areas of the faces with a feature add up to the feature's area. Errors name a layer as operand 0 (`a`) or 1
+/// (`b`) and a polygon by its index among the layer's polygons, counted through its features in order.
+///
+/// ```
+/// use polysweep::{overlay_layers, LayerMode, MultiPolygon, Options};
+/// let square = |x: f64, y: f64, side: f64| {
+///     MultiPolygon::from_coordinates(&[vec![vec![[x, y], [x + side, y], [x + side, y + side], [x, y + side]]]])
+/// };
+/// // Two parcels side by side, and a zone across both.
+/// let parcels = [square(0.0, 0.0, 2.0), square(2.0, 0.0, 2.0)];
+/// let zones = [square(1.0, 1.0, 2.0)];
+/// let faces = overlay_layers(&parcels, &zones, LayerMode::Intersection, &Options::default())?;
+/// assert_eq!(faces.len(), 2);
+/// assert_eq!((faces[0].a.as_slice(), faces[0].b.as_slice(), faces[0].polygons.area()), (&[0][..], &[0][..], 1.0));
+/// assert_eq!((faces[1].a.as_slice(), faces[1].polygons.area()), (&[1][..], 1.0));
+/// # Ok::<(), polysweep::Error>(())
+/// ```
+pub fn overlay_layers(
+    a: &[MultiPolygon],
+    b: &[MultiPolygon],
+    mode: LayerMode,
+    options: &Options,
+) -> Result<Vec<LayerFace>, Error> {
+    let boxes = [check_layer(0, a)?, check_layer(1, b)?];
+    let magnitude = boxes[0].around(&boxes[1]).magnitude();
+    // Each feature a valid polygon set, its edges in the layer's slot; the item of each segment is its feature,
+    // numbered through both layers.
+    let mut edges = Vec::new();
+    let mut feature_of_segment = Vec::new();
+    let features = a.iter().map(|f| (0, f)).chain(b.iter().map(|f| (1, f)));
+    workspace::with(options.shortcuts.keep_working_memory, |workspace| {
+        for (index, (layer, feature)) in features.enumerate() {
+            let (readable, fill_rule) = readable(feature, magnitude, options)?;
+            let mut own = workspace::take(&mut workspace.edges);
+            input::add_edges(&mut own, &readable, 0, |_| true);
+            let normalise = Selection::Pair {
+                operation: Operation::Union,
+                fill_rule,
+            };
+            let options = options.with_fill_rule(fill_rule);
+            let (valid, _) = sweep(
+                own,
+                normalise,
+                f64::INFINITY,
+                magnitude,
+                &options,
+                workspace,
+                None,
+            )?;
+            input::add_edges(&mut edges, &valid, layer, |_| true);
+            feature_of_segment.resize(edges.len(), index as u32);
+        }
+        Ok::<_, Error>(())
+    })?;
+    let arrangement = Arrangement::sweep(edges, magnitude, options)?;
+    let (sides, sets) = arrangement.item_sets(|s| feature_of_segment[s as usize]);
+    let in_a = a.len() as u32;
+    let kept: Vec<bool> = (sets.iter())
+        .map(|set| {
+            let covered_by_a = set.first().is_some_and(|&f| f < in_a);
+            let covered_by_b = set.last().is_some_and(|&f| f >= in_a);
+            mode.keeps(covered_by_a, covered_by_b)
+        })
+        .collect();
+    let polygons = arrangement.polygons(|h| {
+        let [left, right] = [h % 2, 1 - h % 2].map(|side| sides[(h / 2) as usize][side as usize]);
+        if left != right && kept[left as usize] {
+            left
+        } else {
+            NONE
+        }
+    });
+    let mut faces: HashMap<u32, MultiPolygon> = HashMap::new();
+    for (set, polygon) in polygons {
+        faces.entry(set).or_default().0.push(polygon);
+    }
+    let mut faces: Vec<LayerFace> = (faces.into_iter())
+        .map(|(set, polygons)| {
+            let set = &sets[set as usize];
+            let split = set.partition_point(|&f| f < in_a);
+            LayerFace {
+                a: set[..split].to_vec(),
+                b: set[split..].iter().map(|f| f - in_a).collect(),
+                polygons,
+            }
+        })
+        .collect();
+    faces.sort_by(|x, y| (&x.a, &x.b).cmp(&(&y.a, &y.b)));
+    Ok(faces)
+}
+
+/// Checks every feature of layer `index`, naming a bad vertex's polygon by its index through the layer; returns
+/// the box around the layer.
+fn check_layer(index: usize, features: &[MultiPolygon]) -> Result<Bounds, Error> {
+    let mut boxes = Vec::new();
+    for feature in features {
+        let before = boxes.len();
+        let feature_boxes = input::check(index, feature).map_err(|e| {
+            e.relocated(|at| Location {
+                polygon: before + at.polygon,
+                ..at
+            })
+        })?;
+        boxes.extend(feature_boxes);
+    }
+    Ok(Bounds::around_all(&boxes))
+}
+
+/// `features` merged by key: for each distinct key, in the order keys first appear, the union of the features with
+/// that key (so features of one key that share an edge or overlap become one polygon). Errors name a feature as
+/// the operand.
+///
+/// ```
+/// use polysweep::{dissolve, MultiPolygon, Options};
+/// let square = |x: f64| MultiPolygon::from_coordinates(&[vec![vec![[x, 0.0], [x + 1.0, 0.0], [x + 1.0, 1.0], [x, 1.0]]]]);
+/// let merged = dissolve(&[square(0.0), square(1.0), square(2.0)], &["park", "park", "lake"], &Options::default())?;
+/// assert_eq!(merged.len(), 2);
+/// assert_eq!((merged[0].0, merged[0].1.0.len(), merged[0].1.area()), ("park", 1, 2.0));
+/// # Ok::<(), polysweep::Error>(())
+/// ```
+pub fn dissolve<K: Eq + Hash + Clone>(
+    features: &[MultiPolygon],
+    keys: &[K],
+    options: &Options,
+) -> Result<Vec<(K, MultiPolygon)>, Error> {
+    assert_eq!(features.len(), keys.len(), "one key per feature");
+    let mut groups: Vec<(K, Vec<usize>)> = Vec::new();
+    let mut group_of: HashMap<&K, usize> = HashMap::new();
+    for (i, key) in keys.iter().enumerate() {
+        let g = *group_of.entry(key).or_insert_with(|| {
+            groups.push((key.clone(), Vec::new()));
+            groups.len() - 1
+        });
+        groups[g].1.push(i);
+    }
+    let mut merged = Vec::with_capacity(groups.len());
+    for (key, members) in groups {
+        let operands: Vec<&MultiPolygon> = members.iter().map(|&i| &features[i]).collect();
+        let union =
+            crate::overlay::overlay_many(Operation::Union, &operands, options).map_err(|e| {
+                e.relocated(|at| Location {
+                    operand: members[at.operand],
+                    ..at
+                })
+            })?;
+        merged.push((key, union));
+    }
+    Ok(merged)
+}
