@@ -6,7 +6,7 @@
 // wasm module once, by top-level await, before anything here runs; after that every call is synchronous and
 // nothing needs freeing.
 
-import { overlay_flat } from './polysweep_wasm.js';
+import { clip_flat, overlay_flat, overlay_layers_flat, split_flat } from './polysweep_wasm.js';
 
 const OPERATIONS = { intersection: 0, union: 1, difference: 2, xor: 3 };
 // The codes the wasm side maps to the core's FillRule (crates/polysweep-wasm).
@@ -361,4 +361,321 @@ export function overlayFlat(operation, operands, options) {
   const packed = run(OPERATIONS[operation], fillRule, operands);
   const out = unpack(packed);
   return { coords: Float64Array.from(out.coords), ringOffsets: out.ringOffsets, polygonOffsets: out.polygonOffsets };
+}
+
+// --- Lines and layers: clip, split, overlayLayers, dissolve ---
+
+const LAYER_MODES = { intersection: 0, union: 1, identity: 2, difference: 3, xor: 4 };
+
+/** Are these LineString coordinates (positions) rather than MultiLineString ones (lines of positions)? */
+function isLineCoordinates(geom) {
+  const first = geom.find((item) => Array.isArray(item));
+  return first === undefined || typeof first[0] === 'number';
+}
+
+/** Adds a LineString's or MultiLineString's lines to `lines` as `{coordinates, where, owner}`. */
+function addLines(geom, where, owner, lines) {
+  const type = geom?.type;
+  if (type === 'LineString' || type === 'MultiLineString') {
+    if (!Array.isArray(geom.coordinates)) throw new TypeError(`${where}: the ${type}'s coordinates must be an array`);
+    const list = type === 'LineString' ? [geom.coordinates] : geom.coordinates;
+    list.forEach((coordinates, i) => lines.push({ coordinates, where: type === 'LineString' ? where : `${where}, line ${i}`, owner }));
+  } else {
+    throw new TypeError(`${where}: expected a LineString or MultiLineString, not ${describeGeoJSON(geom)}`);
+  }
+}
+
+/**
+ * The lines of an operand of clip or split: `lines` ({coordinates, where, owner}), the GeoJSON `kind` it came as,
+ * and `owners`, the properties of the feature each line's `owner` indexes (one, null, for a bare geometry).
+ */
+function readLines(geom, name) {
+  const lines = [];
+  if (Array.isArray(geom)) {
+    const list = isLineCoordinates(geom) ? [geom] : geom;
+    list.forEach((coordinates, i) => lines.push({ coordinates, where: `${name}, line ${i}`, owner: 0 }));
+    return { lines, kind: 'coordinates', owners: [null] };
+  }
+  const type = geom?.type;
+  if (type === 'Feature') {
+    if (geom.geometry !== null) addLines(geom.geometry, name, 0, lines);
+    return { lines, kind: 'feature', owners: [geom.properties ?? null] };
+  }
+  if (type === 'FeatureCollection') {
+    if (!Array.isArray(geom.features)) throw new TypeError(`${name}: the FeatureCollection's features must be an array`);
+    const owners = geom.features.map((feature, i) => {
+      if (feature?.type !== 'Feature') throw new TypeError(`${name}, feature ${i}: expected a Feature, not ${describeGeoJSON(feature)}`);
+      if (feature.geometry !== null) addLines(feature.geometry, `${name}, feature ${i}`, i, lines);
+      return feature.properties ?? null;
+    });
+    return { lines, kind: 'featureCollection', owners };
+  }
+  if (geom === null || typeof geom !== 'object') {
+    throw new TypeError(`${name}: expected LineString or MultiLineString coordinates, a geometry, a Feature or a FeatureCollection, not ${describe(geom)}`);
+  }
+  addLines(geom, name, 0, lines);
+  return { lines, kind: 'geometry', owners: [null] };
+}
+
+/** Lines in the flat form: x, y pairs and each line's vertex offsets. */
+function linesToFlat(lines) {
+  let vertices = 0;
+  for (const { coordinates, where } of lines) {
+    if (!Array.isArray(coordinates)) throw new TypeError(`${where}: must be an array of positions`);
+    vertices += coordinates.length;
+    if (vertices > MAX_VERTICES) throw new RangeError(`${where}: more than ${MAX_VERTICES} vertices, more than wasm memory holds`);
+  }
+  const coords = new Float64Array(2 * vertices);
+  const lineOffsets = new Uint32Array(lines.length + 1);
+  let v = 0;
+  lines.forEach(({ coordinates, where }, l) => {
+    coordinates.forEach((position, i) => {
+      if (!Array.isArray(position) || typeof position[0] !== 'number' || typeof position[1] !== 'number') {
+        throw new TypeError(`${where}, vertex ${i}: a position must be an array of two (or more) numbers`);
+      }
+      coords[2 * v] = position[0];
+      coords[2 * v + 1] = position[1];
+      v++;
+    });
+    lineOffsets[l + 1] = v;
+  });
+  return { coords, lineOffsets };
+}
+
+/**
+ * Calls a wasm function of lines and a polygon set, whose errors name the polygon set as the core's operand 0 and a
+ * line as its operand 1 (polygon = the line, ring 0): they become RangeErrors naming the caller's feature and line.
+ */
+function runWithLines(call, polygonLabels, lines) {
+  try {
+    return call();
+  } catch (error) {
+    let message = error?.message ?? String(error);
+    const onPolygon = /^operand 0, polygon (\d+), /.exec(message);
+    const onLine = /^operand 1, polygon (\d+), ring 0, /.exec(message);
+    if (onPolygon) {
+      const p = Number(onPolygon[1]);
+      const label = polygonLabels.find(({ first, end }) => first <= p && p < end);
+      if (label) message = `${label.where}, polygon ${p - label.first}, ${message.slice(onPolygon[0].length)}`;
+    } else if (onLine && lines[Number(onLine[1])]) {
+      message = `${lines[Number(onLine[1])].where}, ${message.slice(onLine[0].length)}`;
+    }
+    throw new RangeError(message);
+  }
+}
+
+/** The polygon-set operand of clip or split, read and flattened, named `name` in errors. */
+function readPolygonSet(geom, name, skipNonPolygonal) {
+  const input = readOperand(geom, 0, skipNonPolygonal);
+  for (const part of input.parts) part.where = part.where.replace(/^operand 0/, name);
+  return { input, flat: toFlat(input.parts) };
+}
+
+/** A choice among `names` in `options[key]`, as its index, `fallback` when not given. */
+function choice(options, key, names, fallback) {
+  const value = options?.[key] ?? fallback;
+  const index = names.indexOf(value);
+  if (index < 0) {
+    throw new TypeError(`options.${key} must be ${names.slice(0, -1).map((n) => `'${n}'`).join(', ')} or '${names.at(-1)}', not ${describe(value)}`);
+  }
+  return index;
+}
+
+/**
+ * The parts of the lines inside (or outside) a polygon set. `lines`: LineString or MultiLineString coordinates, a
+ * geometry, a Feature or a FeatureCollection of them; `polygon`: any operand of the Boolean operations. Options:
+ * `keep` ('inside' or 'outside'), `boundary` (parts along the polygon set's boundary count as 'inside', the
+ * default, as GEOS's intersection and difference have it, or 'outside'), `fillRule`, `skipNonPolygonal`. The result
+ * comes in the kind of `lines`: MultiLineString coordinates, a MultiLineString, a Feature with its properties, or
+ * a FeatureCollection with a feature per input feature that keeps any part.
+ */
+export function clip(lines, polygon, options) {
+  const { fillRule, skipNonPolygonal } = optionsOf(options);
+  const keep = choice(options, 'keep', ['inside', 'outside'], 'inside');
+  const boundary = choice(options, 'boundary', ['inside', 'outside'], 'inside');
+  const read = readLines(lines, 'operand 0');
+  const flatLines = linesToFlat(read.lines);
+  const { flat } = readPolygonSet(polygon, 'operand 1', skipNonPolygonal);
+  const packed = runWithLines(
+    () => clip_flat(keep, boundary, fillRule, flatLines.coords, flatLines.lineOffsets, flat.coords, flat.ringOffsets, flat.polygonOffsets),
+    flat.labels,
+    read.lines,
+  );
+  // Unpacked: per line its parts, each a list of positions.
+  const lineCount = packed[0];
+  const partStart = 1;
+  const vertexStart = partStart + lineCount + 1;
+  const partCount = packed[partStart + lineCount];
+  const xy = vertexStart + partCount + 1;
+  const byOwner = read.owners.map(() => []);
+  for (let l = 0; l < lineCount; l++) {
+    for (let part = packed[partStart + l]; part < packed[partStart + l + 1]; part++) {
+      const positions = [];
+      for (let v = packed[vertexStart + part]; v < packed[vertexStart + part + 1]; v++) {
+        positions.push([packed[xy + 2 * v], packed[xy + 2 * v + 1]]);
+      }
+      byOwner[read.lines[l].owner].push(positions);
+    }
+  }
+  const geometry = (coordinates) => ({ type: 'MultiLineString', coordinates });
+  switch (read.kind) {
+    case 'coordinates':
+      return byOwner[0];
+    case 'geometry':
+      return geometry(byOwner[0]);
+    case 'feature':
+      return { type: 'Feature', properties: read.owners[0], geometry: geometry(byOwner[0]) };
+    default:
+      return {
+        type: 'FeatureCollection',
+        features: byOwner.flatMap((parts, i) => (parts.length > 0 ? [{ type: 'Feature', properties: read.owners[i], geometry: geometry(parts) }] : [])),
+      };
+  }
+}
+
+/**
+ * A polygon set cut along lines into pieces. `polygon`: any operand (a FeatureCollection is cut feature by
+ * feature, each piece keeping its feature's properties); `lines`: as for clip. Only the lines' parts that cross a
+ * polygon from boundary to boundary cut it; dangling ends and parts along the boundary cut nothing. The result: an
+ * array of Polygon coordinates for coordinates, otherwise a FeatureCollection of Polygon features.
+ */
+export function split(polygon, lines, options) {
+  const { fillRule, skipNonPolygonal } = optionsOf(options);
+  const read = readLines(lines, 'operand 1');
+  const flatLines = linesToFlat(read.lines);
+  const cut = (geom, name) => {
+    const { flat } = readPolygonSet(geom, name, skipNonPolygonal);
+    const packed = runWithLines(
+      () => split_flat(fillRule, flat.coords, flat.ringOffsets, flat.polygonOffsets, flatLines.coords, flatLines.lineOffsets),
+      flat.labels,
+      read.lines,
+    );
+    return toCoordinates(unpack(packed));
+  };
+  if (Array.isArray(polygon)) return cut(polygon, 'operand 0');
+  const pieces = (coordinates, properties) => coordinates.map((c) => ({ type: 'Feature', properties, geometry: { type: 'Polygon', coordinates: c } }));
+  if (polygon?.type === 'FeatureCollection' && Array.isArray(polygon.features)) {
+    return {
+      type: 'FeatureCollection',
+      features: polygon.features.flatMap((feature, i) => {
+        if (feature?.type !== 'Feature') throw new TypeError(`operand 0, feature ${i}: expected a Feature, not ${describeGeoJSON(feature)}`);
+        return pieces(cut(feature, `operand 0, feature ${i}`), feature.properties ?? null);
+      }),
+    };
+  }
+  const properties = polygon?.type === 'Feature' ? (polygon.properties ?? null) : null;
+  return { type: 'FeatureCollection', features: pieces(cut(polygon, 'operand 0'), properties) };
+}
+
+/** The features of a layer (a FeatureCollection or an array of Features), each as its polygons' parts. */
+function readLayer(layer, name, skip) {
+  const features = Array.isArray(layer) ? layer : layer?.type === 'FeatureCollection' ? layer.features : undefined;
+  if (!Array.isArray(features)) throw new TypeError(`${name}: expected a FeatureCollection or an array of Features, not ${describeGeoJSON(layer)}`);
+  return features.map((feature, i) => {
+    const where = `${name}, feature ${i}`;
+    if (feature?.type !== 'Feature') throw new TypeError(`${where}: expected a Feature, not ${describeGeoJSON(feature)}`);
+    const parts = [];
+    addFeature(feature, where, parts, skip);
+    return { parts, properties: feature.properties ?? null };
+  });
+}
+
+/**
+ * The overlay of two layers (FeatureCollections, or arrays of Features, of polygons) in one sweep: the faces of
+ * their arrangement that `options.mode` keeps ('intersection', the default: covered by a feature of each layer;
+ * 'union'; 'identity': every face of layer A; 'difference': of A and no feature of B; 'xor'), as a FeatureCollection
+ * of MultiPolygon features, one per set of covering features, whose properties are `{a, b, aIndex, bIndex,
+ * aIndices, bIndices}`: the properties and index of the covering feature of each layer (the first, where several
+ * of one layer overlap; null where none) and the indices of all. `options.properties(a, b)`, given the arrays of
+ * covering features' properties of each layer, makes the properties instead.
+ */
+export function overlayLayers(layerA, layerB, options) {
+  const { fillRule, skipNonPolygonal } = optionsOf(options);
+  const mode = choice(options, 'mode', Object.keys(LAYER_MODES), 'intersection');
+  const makeProperties = options?.properties;
+  if (makeProperties !== undefined && typeof makeProperties !== 'function') {
+    throw new TypeError(`options.properties must be a function (a, b) => properties, not ${describe(makeProperties)}`);
+  }
+  const layers = [readLayer(layerA, 'layer A', skipNonPolygonal), readLayer(layerB, 'layer B', skipNonPolygonal)];
+  // All features of both layers, in one flat operand list: the core numbers a layer's polygons straight through.
+  const features = layers.flat();
+  const flats = features.map((feature) => toFlat(feature.parts));
+  const flat = concatenate(flats);
+  const layerOffsets = new Uint32Array([0, layers[0].length, features.length]);
+  const featureOffsets = flat.operandOffsets;
+  let packed;
+  try {
+    packed = overlay_layers_flat(mode, fillRule, flat.coords, flat.ringOffsets, flat.polygonOffsets, featureOffsets, layerOffsets);
+  } catch (error) {
+    let message = error?.message ?? String(error);
+    const at = /^operand (\d+), polygon (\d+), /.exec(message);
+    if (at) {
+      // The polygon's index through the layer, back to its feature.
+      const first = Number(at[1]) === 0 ? 0 : layers[0].length;
+      const p = Number(at[2]) + featureOffsets[first];
+      let f = first;
+      while (featureOffsets[f + 1] <= p) f++;
+      message = `${features[f].parts[0]?.where ?? `feature ${f}`}, polygon ${p - featureOffsets[f]}, ${message.slice(at[0].length)}`;
+    }
+    throw new RangeError(message);
+  }
+  let k = 1;
+  const faces = [];
+  for (let face = 0; face < packed[0]; face++) {
+    const lists = [];
+    for (let side = 0; side < 2; side++) {
+      const n = packed[k++];
+      lists.push(Array.from(packed.subarray(k, k + n)));
+      k += n;
+    }
+    faces.push({ a: lists[0], b: lists[1], polygons: packed[k++] });
+  }
+  const all = toCoordinates(unpack(packed.subarray(k)));
+  let p = 0;
+  return {
+    type: 'FeatureCollection',
+    features: faces.map(({ a, b, polygons }) => {
+      const coordinates = all.slice(p, (p += polygons));
+      const [aProps, bProps] = [a.map((i) => layers[0][i].properties), b.map((i) => layers[1][i].properties)];
+      const properties = makeProperties
+        ? makeProperties(aProps, bProps)
+        : { a: aProps[0] ?? null, b: bProps[0] ?? null, aIndex: a[0] ?? null, bIndex: b[0] ?? null, aIndices: a, bIndices: b };
+      return { type: 'Feature', properties, geometry: { type: 'MultiPolygon', coordinates } };
+    }),
+  };
+}
+
+/**
+ * Features merged by a key: `key` a property name, a function (feature, index) => value, or undefined (all into
+ * one). One MultiPolygon feature per distinct value, in the order values first appear, with properties
+ * `{[key]: value}` (`{key: value}` for a function): the union of that value's features, so neighbours that share
+ * an edge or overlap become one polygon. Features whose union is empty are left out.
+ */
+export function dissolve(featureCollection, key, options) {
+  const features = Array.isArray(featureCollection) ? featureCollection : featureCollection?.features;
+  if (!Array.isArray(features)) throw new TypeError(`operand 0: expected a FeatureCollection or an array of Features, not ${describeGeoJSON(featureCollection)}`);
+  if (key !== undefined && typeof key !== 'string' && typeof key !== 'function') {
+    throw new TypeError(`key must be a property name, a function (feature, index) => value, or undefined, not ${describe(key)}`);
+  }
+  const valueOf = typeof key === 'function' ? key : (feature) => (key === undefined ? null : feature?.properties?.[key]);
+  const groups = new Map();
+  features.forEach((feature, i) => {
+    if (feature?.type !== 'Feature') throw new TypeError(`operand 0, feature ${i}: expected a Feature, not ${describeGeoJSON(feature)}`);
+    const value = valueOf(feature, i);
+    if (!groups.has(value)) groups.set(value, []);
+    groups.get(value).push({ feature, i });
+  });
+  const name = typeof key === 'string' ? key : 'key';
+  const out = [];
+  for (const [value, members] of groups) {
+    const { fillRule, skipNonPolygonal } = optionsOf(options);
+    const parts = [];
+    for (const { feature, i } of members) addFeature(feature, `operand 0, feature ${i}`, parts, skipNonPolygonal);
+    const flat = toFlat(parts);
+    const coordinates = toCoordinates(unpack(run(OPERATIONS.union, fillRule, [flat], [flat.labels])));
+    if (coordinates.length > 0) {
+      out.push({ type: 'Feature', properties: key === undefined ? {} : { [name]: value }, geometry: { type: 'MultiPolygon', coordinates } });
+    }
+  }
+  return { type: 'FeatureCollection', features: out };
 }

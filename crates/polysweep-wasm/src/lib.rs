@@ -2,7 +2,10 @@
 //! that a call crosses the boundary with a few typed arrays instead of one JS object per vertex. The conversion
 //! from and to GeoJSON lives in the package's JavaScript (`web/src/api.js`). No algorithm code here.
 
-use polysweep::{overlay, overlay_all, FillRule, MultiPolygon, Operation, Options, Point, Polygon};
+use polysweep::{
+    clip, overlay, overlay_all, overlay_layers, split, Boundary, ClipOptions, FillRule, Keep,
+    LayerMode, LineString, MultiPolygon, Operation, Options, Point, Polygon,
+};
 use wasm_bindgen::prelude::*;
 
 /// Operands in flat form. `coords` holds x, y pairs; ring `r` spans vertices `ring_offsets[r]..ring_offsets[r+1]`;
@@ -94,6 +97,24 @@ pub fn overlay_flat(
             ))
         }
     };
+    let options = options(fill_rule)?;
+    let operands = operands(coords, ring_offsets, polygon_offsets, operand_offsets)
+        .map_err(|e| JsError::new(&e))?;
+    let result = match &operands[..] {
+        [a, b] => overlay(operation, a, b, &options),
+        _ => overlay_all(operation, &operands, &options),
+    };
+    result
+        .map(|r| pack(&r))
+        .map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The options with fill rule `fill_rule` (0 even-odd, 1 non-zero, 2 positive, 3 negative, 4 structure).
+fn options(fill_rule: u8) -> Result<Options, JsError> {
+    Ok(Options::default().with_fill_rule(fill_rule_of(fill_rule)?))
+}
+
+fn fill_rule_of(fill_rule: u8) -> Result<FillRule, JsError> {
     let fill_rule = match fill_rule {
         0 => FillRule::EvenOdd,
         1 => FillRule::NonZero,
@@ -106,16 +127,153 @@ pub fn overlay_flat(
             ))
         }
     };
-    let options = Options::default().with_fill_rule(fill_rule);
-    let operands = operands(coords, ring_offsets, polygon_offsets, operand_offsets)
+    Ok(fill_rule)
+}
+
+/// One polygon set in flat form (see [`operands`]).
+fn polygon_set(coords: &[f64], rings: &[u32], polygons: &[u32]) -> Result<MultiPolygon, JsError> {
+    let end = polygons.len().saturating_sub(1) as u32;
+    let mut all = operands(coords, rings, polygons, &[0, end]).map_err(|e| JsError::new(&e))?;
+    Ok(all.pop().unwrap_or_default())
+}
+
+/// Lines in flat form: line `l` spans vertices `line_offsets[l]..line_offsets[l+1]` of `coords`.
+fn lines(coords: &[f64], line_offsets: &[u32]) -> Result<Vec<LineString>, JsError> {
+    // (A line is read as a ring of one polygon each: the same checks of the offsets.)
+    let each: Vec<u32> = (0..line_offsets.len() as u32).collect();
+    let end = line_offsets.len().saturating_sub(1) as u32;
+    let as_rings =
+        operands(coords, line_offsets, &each, &[0, end]).map_err(|e| JsError::new(&e))?;
+    Ok((as_rings.into_iter().flat_map(|m| m.0))
+        .map(|p| p.exterior)
+        .collect())
+}
+
+fn js_error(error: polysweep::Error) -> JsError {
+    JsError::new(&error.to_string())
+}
+
+/// `lines` clipped by the polygon set: `keep` 0 inside, 1 outside; `boundary` 0 counts parts along the boundary as
+/// inside, 1 as outside. Packed as `[lines, part offsets per line (lines + 1), vertex offsets per part (parts +
+/// 1), x, y, ...]`.
+#[wasm_bindgen]
+#[allow(clippy::too_many_arguments)]
+pub fn clip_flat(
+    keep: u8,
+    boundary: u8,
+    fill_rule: u8,
+    line_coords: &[f64],
+    line_offsets: &[u32],
+    coords: &[f64],
+    ring_offsets: &[u32],
+    polygon_offsets: &[u32],
+) -> Result<Vec<f64>, JsError> {
+    let clip_options = ClipOptions::default()
+        .with_fill_rule(fill_rule_of(fill_rule)?)
+        .keeping(if keep == 0 {
+            Keep::Inside
+        } else {
+            Keep::Outside
+        })
+        .with_boundary(if boundary == 0 {
+            Boundary::Inside
+        } else {
+            Boundary::Outside
+        });
+    let polygon = polygon_set(coords, ring_offsets, polygon_offsets)?;
+    let parts =
+        clip(&lines(line_coords, line_offsets)?, &polygon, &clip_options).map_err(js_error)?;
+    let part_count: usize = parts.iter().map(Vec::len).sum();
+    let mut out = vec![parts.len() as f64, 0.0];
+    let mut count = 0;
+    for line in &parts {
+        count += line.len();
+        out.push(count as f64);
+    }
+    let mut vertices = 0;
+    out.push(0.0);
+    for part in parts.iter().flatten() {
+        vertices += part.len();
+        out.push(vertices as f64);
+    }
+    debug_assert_eq!(out.len(), parts.len() + 3 + part_count);
+    for p in parts.iter().flatten().flatten() {
+        out.extend([p.x, p.y]);
+    }
+    Ok(out)
+}
+
+/// The pieces of the polygon set cut along the lines, packed as [`overlay_flat`]'s result (a polygon per piece).
+#[wasm_bindgen]
+pub fn split_flat(
+    fill_rule: u8,
+    coords: &[f64],
+    ring_offsets: &[u32],
+    polygon_offsets: &[u32],
+    line_coords: &[f64],
+    line_offsets: &[u32],
+) -> Result<Vec<f64>, JsError> {
+    let polygon = polygon_set(coords, ring_offsets, polygon_offsets)?;
+    let pieces = split(
+        &polygon,
+        &lines(line_coords, line_offsets)?,
+        &options(fill_rule)?,
+    )
+    .map_err(js_error)?;
+    Ok(pack(&MultiPolygon(pieces)))
+}
+
+/// The overlay of two layers of features, flat: feature `f` spans polygons `feature_offsets[f]..[f+1]`, layer `l`
+/// features `layer_offsets[l]..[l+1]` (two layers); `mode` 0 intersection, 1 union, 2 identity, 3 difference, 4
+/// xor. Packed as `[faces, then per face: its count of layer-A features and their indices, its count of layer-B
+/// features and theirs, its count of polygons; then all the faces' polygons packed as overlay_flat's result]`.
+#[wasm_bindgen]
+#[allow(clippy::too_many_arguments)]
+pub fn overlay_layers_flat(
+    mode: u8,
+    fill_rule: u8,
+    coords: &[f64],
+    ring_offsets: &[u32],
+    polygon_offsets: &[u32],
+    feature_offsets: &[u32],
+    layer_offsets: &[u32],
+) -> Result<Vec<f64>, JsError> {
+    let mode =
+        match mode {
+            0 => LayerMode::Intersection,
+            1 => LayerMode::Union,
+            2 => LayerMode::Identity,
+            3 => LayerMode::Difference,
+            4 => LayerMode::Xor,
+            _ => return Err(JsError::new(
+                "mode must be 0 (intersection), 1 (union), 2 (identity), 3 (difference) or 4 (xor)",
+            )),
+        };
+    let features = operands(coords, ring_offsets, polygon_offsets, feature_offsets)
         .map_err(|e| JsError::new(&e))?;
-    let result = match &operands[..] {
-        [a, b] => overlay(operation, a, b, &options),
-        _ => overlay_all(operation, &operands, &options),
+    let layer = |l: usize| -> Result<&[MultiPolygon], JsError> {
+        match (layer_offsets.get(l), layer_offsets.get(l + 1)) {
+            (Some(&a), Some(&b)) if a <= b && b as usize <= features.len() => {
+                Ok(&features[a as usize..b as usize])
+            }
+            _ => Err(JsError::new(
+                "layer offsets must be three increasing feature offsets",
+            )),
+        }
     };
-    result
-        .map(|r| pack(&r))
-        .map_err(|e| JsError::new(&e.to_string()))
+    let faces =
+        overlay_layers(layer(0)?, layer(1)?, mode, &options(fill_rule)?).map_err(js_error)?;
+    let mut out = vec![faces.len() as f64];
+    for face in &faces {
+        for list in [&face.a, &face.b] {
+            out.push(list.len() as f64);
+            out.extend(list.iter().map(|&i| i as f64));
+        }
+        out.push(face.polygons.0.len() as f64);
+    }
+    let all = MultiPolygon(faces.into_iter().flat_map(|f| f.polygons.0).collect());
+    out.extend(pack(&all));
+    Ok(out)
 }
 
 #[cfg(test)]

@@ -91,46 +91,66 @@ pub fn clip(
     // Along each segment, the line's way: exact vertex ids follow the sweep order.
     pieces.sort_unstable_by_key(|&(s, [a, b], _)| (s, a.min(b)));
     let mut parts: Vec<Vec<LineString>> = vec![Vec::new(); lines.len()];
-    let mut part: Vec<Point> = Vec::new();
+    let mut part = Part::default();
     let mut at = 0;
     let mut line = NONE;
-    let close = |part: &mut Vec<Point>, parts: &mut Vec<Vec<LineString>>, line: u32| {
-        if part.len() >= 2 {
-            parts[line as usize].push(std::mem::take(part));
-        }
-        part.clear();
-    };
     for s in swept.first_line_segment..arrangement.input.len() as u32 {
         let (this_line, forward) = swept.lines[(s - swept.first_line_segment) as usize];
         if this_line != line {
-            if line != NONE {
-                close(&mut part, &mut parts, line);
-            }
+            part.close(&mut parts, line);
             line = this_line;
         }
         let end = at + pieces[at..].partition_point(|p| p.0 == s);
-        let mut along = |&(_, [a, b], kept): &(u32, [u32; 2], bool)| {
+        let mut along: Vec<&(u32, [u32; 2], bool)> = pieces[at..end].iter().collect();
+        if !forward {
+            along.reverse();
+        }
+        let last = along.len().saturating_sub(1);
+        for (i, &&(_, [a, b], kept)) in along.iter().enumerate() {
             if !kept {
-                return close(&mut part, &mut parts, line);
+                part.close(&mut parts, line);
+                continue;
             }
-            for v in [a, b] {
-                let p = arrangement.point(v);
-                if part.last() != Some(&p) {
-                    part.push(p);
-                }
+            // A part keeps the line's own vertices and its two ends, not the points where other edges met it.
+            if part.points.is_empty() {
+                part.push(arrangement.point(a));
             }
-        };
-        if forward {
-            pieces[at..end].iter().for_each(&mut along);
-        } else {
-            pieces[at..end].iter().rev().for_each(&mut along);
+            part.end = Some(arrangement.point(b));
+            if i == last {
+                part.push(arrangement.point(b));
+            }
         }
         at = end;
     }
-    if line != NONE {
-        close(&mut part, &mut parts, line);
-    }
+    part.close(&mut parts, line);
     Ok(parts)
+}
+
+/// A part of a line being built by [`clip`]: its points so far, and where it ends if it ends here.
+#[derive(Default)]
+struct Part {
+    points: LineString,
+    end: Option<Point>,
+}
+
+impl Part {
+    fn push(&mut self, p: Point) {
+        if self.points.last() != Some(&p) {
+            self.points.push(p);
+        }
+        self.end = None;
+    }
+
+    /// Ends the part (if any) as a part of `line`.
+    fn close(&mut self, parts: &mut [Vec<LineString>], line: u32) {
+        if let Some(end) = self.end.take() {
+            self.push(end);
+        }
+        if self.points.len() >= 2 {
+            parts[line as usize].push(std::mem::take(&mut self.points));
+        }
+        self.points.clear();
+    }
 }
 
 /// Options of [`clip`]: which side to keep, where the boundary goes, and the polygon set's fill rule.
