@@ -5,6 +5,8 @@ import type {
   FeatureCollection,
   Geometry,
   GeometryCollection,
+  LineString,
+  MultiLineString,
   MultiPolygon,
   Polygon,
   Position,
@@ -92,3 +94,101 @@ export function overlayFlat(
   operands: FlatMultiPolygon[],
   options?: Pick<Options, 'fillRule'>,
 ): FlatMultiPolygon;
+
+// --- Lines and layers ---
+
+/** GeoJSON LineString coordinates. */
+export type LineStringCoordinates = Position[];
+/** GeoJSON MultiLineString coordinates. */
+export type MultiLineStringCoordinates = Position[][];
+/** Lines: LineString or MultiLineString coordinates, a geometry, a Feature of one, or a FeatureCollection of them. */
+export type Lines =
+  | LineStringCoordinates
+  | MultiLineStringCoordinates
+  | LineString
+  | MultiLineString
+  | Feature<LineString | MultiLineString | null, any>
+  | FeatureCollection<LineString | MultiLineString | null, any>;
+
+export interface ClipOptions extends Options {
+  /** The parts to keep: 'inside' the polygon set (the default) or 'outside' it. */
+  keep?: 'inside' | 'outside';
+  /** Parts running along the polygon set's boundary count as 'inside' (the default, as GEOS has it) or 'outside'. */
+  boundary?: 'inside' | 'outside';
+}
+
+/** clip's result, in the kind of its lines. */
+export type ClipResult<L> =
+  L extends FeatureCollection<any, infer P>
+    ? FeatureCollection<MultiLineString, P>
+    : L extends Feature<any, infer P>
+      ? Feature<MultiLineString, P>
+      : L extends LineString | MultiLineString
+        ? MultiLineString
+        : MultiLineStringCoordinates;
+
+/**
+ * The parts of `lines` inside (or outside) `polygon`, cut only where they pass through its boundary; input
+ * vertices bit for bit, cut points the exact crossings rounded to the nearest floats.
+ */
+export function clip<L extends Lines>(lines: L, polygon: Operand, options?: ClipOptions): ClipResult<L>;
+
+/** split's result: Polygon coordinates for coordinates; otherwise Polygon features with their feature's properties. */
+export type SplitResult<G> = G extends PolygonCoordinates | MultiPolygonCoordinates
+  ? PolygonCoordinates[]
+  : FeatureCollection<Polygon, G extends Feature<any, infer P> | FeatureCollection<any, infer P> ? P : null>;
+
+/**
+ * `polygon` cut into pieces along `lines`: each piece a valid polygon, together the polygon. Dangling ends and
+ * lines along the boundary cut nothing; a FeatureCollection is cut feature by feature.
+ */
+export function split<G extends Operand>(polygon: G, lines: Lines, options?: Options): SplitResult<G>;
+
+/** A layer: a FeatureCollection or an array of polygon Features. */
+export type Layer<P = any> = FeatureCollection<PolygonalGeometry | null, P> | Feature<PolygonalGeometry | null, P>[];
+
+/** Which faces overlayLayers returns, by the features covering them. */
+export type LayerMode = 'intersection' | 'union' | 'identity' | 'difference' | 'xor';
+
+/** The properties of a face of overlayLayers (without `options.properties`). */
+export interface LayerFaceProperties<A, B> {
+  /** The covering feature of layer A (the first, where several overlap), or null. */
+  a: A | null;
+  b: B | null;
+  aIndex: number | null;
+  bIndex: number | null;
+  /** Every covering feature of each layer, by index, in increasing order. */
+  aIndices: number[];
+  bIndices: number[];
+}
+
+export interface LayerOptions<A, B, R> extends Options {
+  mode?: LayerMode;
+  /** Makes a face's properties from the covering features' properties of each layer. */
+  properties?: (a: A[], b: B[]) => R;
+}
+
+/**
+ * The overlay of two layers in one sweep: the faces `options.mode` keeps, one MultiPolygon feature per set of
+ * covering features, with their properties.
+ */
+export function overlayLayers<A, B>(
+  layerA: Layer<A>,
+  layerB: Layer<B>,
+  options?: LayerOptions<A, B, never> & { properties?: undefined },
+): FeatureCollection<MultiPolygon, LayerFaceProperties<A, B>>;
+export function overlayLayers<A, B, R>(
+  layerA: Layer<A>,
+  layerB: Layer<B>,
+  options: LayerOptions<A, B, R> & { properties: (a: A[], b: B[]) => R },
+): FeatureCollection<MultiPolygon, R>;
+
+/**
+ * Features merged by `key` (a property name, a function of the feature, or undefined for all into one): one
+ * MultiPolygon feature per distinct value, the union of its features, with properties `{[key]: value}`.
+ */
+export function dissolve<P>(
+  features: Layer<P>,
+  key?: string | ((feature: Feature<any, P>, index: number) => unknown),
+  options?: Options,
+): FeatureCollection<MultiPolygon, Record<string, unknown>>;

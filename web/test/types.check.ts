@@ -126,3 +126,32 @@ const flat: FlatMultiPolygon = overlayFlat(
 overlayFlat('subtract', []);
 
 export { fromCoordinates, name, merge, flat, skipped, notAFeature, notCoordinates, wrongProperties };
+
+// ---- Lines and layers ----
+import { clip, split, overlayLayers, dissolve } from 'polysweep';
+import type { LayerFaceProperties } from 'polysweep';
+import type { MultiLineString } from 'geojson';
+
+const road: Feature<LineString, { name: string }> = { type: 'Feature', properties: { name: 'A1' }, geometry: lineString };
+exactly<Feature<MultiLineString, { name: string }>, typeof clippedRoad>(true);
+const clippedRoad = clip(road, polygon, { keep: 'outside', boundary: 'inside' });
+exactly<MultiLineString, ReturnType<typeof clip<LineString>>>(true);
+exactly<Position[][], ReturnType<typeof clip<Position[]>>>(true);
+// @ts-expect-error: keep is 'inside' or 'outside'
+clip(lineString, polygon, { keep: 'middle' });
+
+type Lot = { parcel: string };
+type Zone = { zone: number };
+const lots: FeatureCollection<Polygon, Lot> = { type: 'FeatureCollection', features: [{ type: 'Feature', properties: { parcel: 'P1' }, geometry: polygon }] };
+const zones: Feature<MultiPolygon, Zone>[] = [{ type: 'Feature', properties: { zone: 3 }, geometry: multiPolygon }];
+const pieces = split(lots, lineString);
+exactly<FeatureCollection<Polygon, Lot>, typeof pieces>(true);
+exactly<Position[][][], ReturnType<typeof split<Position[][]>>>(true);
+const faces = overlayLayers(lots, zones, { mode: 'identity' });
+exactly<FeatureCollection<MultiPolygon, LayerFaceProperties<Lot, Zone>>, typeof faces>(true);
+const merged = overlayLayers(lots, zones, { properties: (a, b) => ({ parcel: a[0]?.parcel, zone: b[0]?.zone }) });
+exactly<FeatureCollection<MultiPolygon, { parcel: string; zone: number }>, typeof merged>(true);
+// @ts-expect-error: no such mode
+overlayLayers(lots, zones, { mode: 'cut' });
+dissolve(lots, 'parcel');
+dissolve(lots, (f) => f.properties.parcel.slice(0, 1));
