@@ -99,6 +99,8 @@ pub(crate) enum Selection {
 }
 
 impl Selection {
+    // (Inlined into `flags`, on the path of every edge; as a call it cost 2% of Table 1.)
+    #[inline(always)]
     pub fn in_result(&self, coverage: [i32; 2]) -> bool {
         match *self {
             Selection::Pair {
