@@ -4,8 +4,8 @@
 # formatting and clippy's lints, runs the core's unit, fixture, property and Table 1 tests (and the geo-types
 # feature's), the playground's native tests and the doc examples, builds the npm package and the playground for the
 # browser, and runs the package's Node, TypeScript and browser tests and the playground's browser test, the
-# package's differential test against GEOS and an exact reference (tests/differential), and a bounded fuzz run of
-# the core.
+# package's differential test against GEOS and an exact reference (tests/differential), the layer-overlay benchmark
+# at its small size, and a bounded fuzz run of the core.
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -51,6 +51,8 @@ fi
 .venv/bin/python -c 'import shapely, sys; sys.exit(shapely.__version__ != "2.2.0")' 2>/dev/null \
   || .venv/bin/pip install --quiet shapely==2.2.0
 .venv/bin/python tests/differential/run.py
+# The layer-overlay benchmark at its small size (it asserts nothing: it must run, and prints its agreement with GEOS).
+node web/bench/layers.mjs --quick
 
 # --- near-degenerate input: a bounded coverage-guided fuzz run of the core (docs/robustness.md) ---
 if ! cargo fuzz --version 2>/dev/null | grep -q '0\.13\.2'; then

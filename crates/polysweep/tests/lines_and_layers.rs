@@ -185,3 +185,76 @@ fn dissolve_fixtures() {
         }
     }
 }
+
+#[test]
+fn bad_input_is_an_error_that_names_the_line_or_feature() {
+    use polysweep::{Error, Location};
+    let square = multipolygon(&serde_json::json!([[[[0, 0], [4, 0], [4, 4], [0, 4]]]]));
+    let at = |error: Error| error.location().expect("names a vertex");
+    let good = vec![Point::new(-1.0, 1.0), Point::new(5.0, 1.0)];
+    let bad = vec![
+        Point::new(0.0, 0.0),
+        Point::new(1.0, 1.0),
+        Point::new(f64::NAN, 2.0),
+    ];
+    // A line is operand 1, its index the polygon's, ring 0.
+    let line_at = Location {
+        operand: 1,
+        polygon: 1,
+        ring: 0,
+        vertex: 2,
+    };
+    let lines = [good.clone(), bad];
+    assert_eq!(
+        at(clip(&lines, &square, &ClipOptions::default()).unwrap_err()),
+        line_at
+    );
+    assert_eq!(
+        at(split(&square, &lines, &Options::default()).unwrap_err()),
+        line_at
+    );
+    // A layer's polygons are counted through its features.
+    let far = multipolygon(&serde_json::json!([[[[0, 0], [1, 0], [1, 1e300]]]]));
+    let layer = [square.clone(), square.clone(), far];
+    let error = overlay_layers(
+        &[square.clone()],
+        &layer,
+        LayerMode::Union,
+        &Options::default(),
+    )
+    .unwrap_err();
+    assert_eq!(
+        at(error),
+        Location {
+            operand: 1,
+            polygon: 2,
+            ring: 0,
+            vertex: 2
+        }
+    );
+    // Dissolve names the feature as the operand.
+    let nan = multipolygon(&serde_json::json!([[[[0, 0], [1, 0], [1, 1]]]]));
+    let mut with_nan = nan.clone();
+    with_nan.0[0].exterior[1].y = f64::NAN;
+    let error = dissolve(
+        &[nan, square.clone(), with_nan],
+        &["a", "b", "a"],
+        &Options::default(),
+    )
+    .unwrap_err();
+    assert_eq!(
+        at(error),
+        Location {
+            operand: 2,
+            polygon: 0,
+            ring: 0,
+            vertex: 1
+        }
+    );
+    // And the library goes on.
+    let parts = clip(&[good], &square, &ClipOptions::default()).unwrap();
+    assert_eq!(
+        parts,
+        vec![vec![vec![Point::new(0.0, 1.0), Point::new(4.0, 1.0)]]]
+    );
+}
