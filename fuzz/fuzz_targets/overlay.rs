@@ -4,6 +4,10 @@
 //! result fed into a second operation. Each result must validate, and be right at sample points away from every
 //! edge: membership there is decided exactly (orient2d on the input's float vertices) from the operands alone.
 //!
+//! Lines and layers too (issue 26), on the same operands: the second operand's rings as lines splitting the first,
+//! and the two as layers of one feature each. They are not snap-rounded (docs/robustness.md, known limit), so only
+//! their membership at the sample points is checked, not the output contract.
+//!
 //! Run: `RUSTC_BOOTSTRAP=1 cargo fuzz run -O -a overlay` in `fuzz/` (`-a`: with debug assertions, among them that
 //! snap rounding's last sweep constructs no point; see docs/robustness.md for the figures).
 #![no_main]
@@ -11,7 +15,8 @@
 use arbitrary::Arbitrary;
 use libfuzzer_sys::fuzz_target;
 use polysweep::{
-    overlay, overlay_all, validate, FillRule, MultiPolygon, Operation, Options, Point,
+    overlay, overlay_all, overlay_layers, split, validate, FillRule, LayerMode, MultiPolygon,
+    Operation, Options, Point,
 };
 
 /// A coordinate: `value` (−8..7) times the case's scale, moved by `nudge` (−4..3) floats.
@@ -186,6 +191,7 @@ fuzz_target!(|case: Case| {
     .expect("coordinates in range");
     let refs: Vec<&MultiPolygon> = operands.iter().collect();
     check(&result, operation, &refs, rule, &samples, margin);
+    check_lines_and_layers(&operands[0], &operands[1], rule, &samples, margin);
     // A result fed into a second operation. The result is a valid polygon set, which every rule but the
     // negative one reads as it is (that one reads it as empty): there the chained operation reads both by even-odd.
     if let Some((second_operation, raw)) = &case.second {
@@ -223,3 +229,62 @@ fuzz_target!(|case: Case| {
         }
     }
 });
+
+/// Splits `polygon` along `other`'s rings (as open lines), and overlays the two as layers of one feature each:
+/// away from every edge, a point of the polygon lies in exactly one piece, and a point lies in the face whose
+/// features are those around it.
+fn check_lines_and_layers(
+    polygon: &MultiPolygon,
+    other: &MultiPolygon,
+    rule: FillRule,
+    samples: &[Point],
+    margin: f64,
+) {
+    let options = Options::default().with_fill_rule(rule);
+    let lines: Vec<Vec<Point>> = other.0.iter().flat_map(|p| p.rings().cloned()).collect();
+    let pieces: Vec<MultiPolygon> = split(polygon, &lines, &options)
+        .expect("coordinates in range")
+        .into_iter()
+        .map(|piece| MultiPolygon(vec![piece]))
+        .collect();
+    let faces = overlay_layers(
+        std::slice::from_ref(polygon),
+        std::slice::from_ref(other),
+        LayerMode::Union,
+        &options,
+    )
+    .expect("coordinates in range");
+    let near = |m: &MultiPolygon, p| near_an_edge(m, p, margin);
+    for &p in samples {
+        if near(polygon, p)
+            || near(other, p)
+            || pieces.iter().any(|m| near(m, p))
+            || faces.iter().any(|f| near(&f.polygons, p))
+        {
+            continue;
+        }
+        let in_pieces = pieces
+            .iter()
+            .filter(|m| inside(m, FillRule::EvenOdd, p))
+            .count();
+        assert_eq!(
+            in_pieces,
+            usize::from(inside(polygon, rule, p)),
+            "split at {p:?}\n{pieces:?}"
+        );
+        let covered: Vec<_> = faces
+            .iter()
+            .filter(|f| inside(&f.polygons, FillRule::EvenOdd, p))
+            .map(|f| (f.a.len(), f.b.len()))
+            .collect();
+        let want = (
+            usize::from(inside(polygon, rule, p)),
+            usize::from(inside(other, rule, p)),
+        );
+        if want == (0, 0) {
+            assert!(covered.is_empty(), "a face where no feature is, at {p:?}");
+        } else {
+            assert_eq!(covered, vec![want], "layers at {p:?}");
+        }
+    }
+}
