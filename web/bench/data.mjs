@@ -89,14 +89,21 @@ export function shippedSquares(n) {
   return existsSync(path) ? coordinatesOf(readJson(path), path) : null;
 }
 
-/** Signed shoelace area of a ring (closed or not). */
+/**
+ * Signed area of a ring (closed or not), shoelace about its first vertex (as GEOS computes it: no cancellation at
+ * large coordinates).
+ */
 export function ringArea(ring) {
-  let s = 0;
   const n = ring.length;
   if (n < 3) return 0;
-  let [px, py] = ring[n - 1];
+  const ox = ring[0][0];
+  const oy = ring[0][1];
+  let s = 0;
+  let px = ring[n - 1][0] - ox;
+  let py = ring[n - 1][1] - oy;
   for (let i = 0; i < n; i++) {
-    const [x, y] = ring[i];
+    const x = ring[i][0] - ox;
+    const y = ring[i][1] - oy;
     s += px * y - x * py;
     px = x;
     py = y;

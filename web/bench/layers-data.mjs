@@ -17,7 +17,7 @@
 
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { BENCH_DIR } from './data.mjs';
+import { BENCH_DIR, multiPolygonArea } from './data.mjs';
 
 export const LAYERS_DIR = join(BENCH_DIR, 'layers');
 export const GRID_STEP = 20; // metres between parcel grid lines
@@ -178,39 +178,12 @@ export function generateLayers({ parcels = 10_000, zones = 100, seed = 1, origin
   };
 }
 
-/** Area of a ring, shoelace about its first vertex (as GEOS computes it: no cancellation at large coordinates). */
-export function ringArea(ring) {
-  const n = ring.length;
-  if (n < 3) return 0;
-  const ox = ring[0][0];
-  const oy = ring[0][1];
-  let s = 0;
-  let px = ring[n - 1][0] - ox;
-  let py = ring[n - 1][1] - oy;
-  for (let i = 0; i < n; i++) {
-    const x = ring[i][0] - ox;
-    const y = ring[i][1] - oy;
-    s += px * y - x * py;
-    px = x;
-    py = y;
-  }
-  return s / 2;
-}
-
 /** Area of a Polygon or MultiPolygon geometry (exteriors minus holes, whatever the orientation); 0 for null. */
 export function geometryArea(geometry) {
   if (!geometry) return 0;
-  const polygons = geometry.type === 'Polygon' ? [geometry.coordinates]
-    : geometry.type === 'MultiPolygon' ? geometry.coordinates : null;
-  if (!polygons) throw new Error(`expected a Polygon or MultiPolygon, got ${geometry.type}`);
-  let area = 0;
-  for (const polygon of polygons) {
-    for (let r = 0; r < polygon.length; r++) {
-      const a = Math.abs(ringArea(polygon[r]));
-      area += r === 0 ? a : -a;
-    }
-  }
-  return area;
+  if (geometry.type === 'Polygon') return multiPolygonArea([geometry.coordinates]);
+  if (geometry.type === 'MultiPolygon') return multiPolygonArea(geometry.coordinates);
+  throw new Error(`expected a Polygon or MultiPolygon, got ${geometry.type}`);
 }
 
 /** Generates both layers and writes them to target/bench/layers/<tag>/; returns {dir, files, tag, ...layers}. */
