@@ -14,6 +14,7 @@ import { serve, stopServer } from '../serve.mjs';
 import { launchChromium, runPage as openPage } from './chromium.mjs';
 import { build, createLogger } from 'vite';
 import { normalise, area } from './normalise.mjs';
+import { checkLinesAndLayers, lineFixtureFiles, lineFixtures } from './lines-and-layers-check.mjs';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
 const fixturesDir = path.join(root, 'tests', 'fixtures');
@@ -45,7 +46,11 @@ before(async () => {
   for (const file of [path.join(root, "pkg", "polysweep.js"), packageWasm]) {
     assert.ok(existsSync(file), `${path.relative(root, file)} is missing: build the package first (web/build.sh)`);
   }
-  ({ server, origin } = await serve({ mounts, generated: new Map([['/fixtures-index.json', () => fixtureFiles]]) }));
+  const generated = new Map([
+    ['/fixtures-index.json', () => fixtureFiles],
+    ['/lines-fixtures-index.json', () => lineFixtureFiles],
+  ]);
+  ({ server, origin } = await serve({ mounts, generated }));
   ({ context, close: closeChromium } = await launchChromium());
 });
 
@@ -86,6 +91,11 @@ test('plain ES module: every fixture in Chromium', { timeout: TIMEOUT }, async (
   assertClean(outcome);
   assert.ok(outcome.requests.includes(`${origin}/pkg/polysweep_wasm_bg.wasm`), 'the page fetched the .wasm');
   await checkFixtureResults(t, outcome.results);
+  // The lines-and-layers fixtures too (clip, split, overlayLayers, dissolve).
+  assert.deepEqual(Object.keys(outcome.lineResults).sort(), lineFixtures.map((f) => f.name).sort());
+  for (const fixture of lineFixtures) {
+    await t.test(`${fixture.operation}: ${fixture.name}`, () => checkLinesAndLayers(fixture, outcome.lineResults[fixture.name]));
+  }
 });
 
 test('module Web Worker: union of two overlapping squares', { timeout: TIMEOUT }, async () => {

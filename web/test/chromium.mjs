@@ -25,7 +25,8 @@ export async function launchChromium() {
 /**
  * Opens `url` in a new page of `context` and waits (at most `timeout` ms) until it sets `window.results` or
  * `window.failure`, or until it logs a console error, throws an uncaught error or fails a request. Returns the
- * page's outcome with everything it complained about and every URL it requested.
+ * page's outcome (also `window.lineResults`, which a page sets before its results) with everything it complained
+ * about and every URL it requested.
  */
 export async function runPage(context, url, timeout) {
   const page = await context.newPage();
@@ -54,7 +55,7 @@ export async function runPage(context, url, timeout) {
     await page.goto(url);
     const settled = page
       .waitForFunction(() => window.results !== undefined || window.failure !== undefined, null, { timeout })
-      .then(() => page.evaluate(() => ({ results: window.results, failure: window.failure })));
+      .then(() => page.evaluate(() => ({ results: window.results, lineResults: window.lineResults, failure: window.failure })));
     const outcome = await Promise.race([settled, complaint.then(() => ({}))]);
     return { ...outcome, problems, requests };
   } finally {

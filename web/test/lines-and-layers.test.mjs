@@ -3,102 +3,23 @@
 // kept, and errors that name the feature, line and vertex.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readdirSync, readFileSync } from 'node:fs';
+import * as api from 'polysweep';
 import { clip, dissolve, overlayLayers, split, union } from 'polysweep';
-import { normalise } from './normalise.mjs';
+import { runLinesAndLayers } from './browser/lines-and-layers.js';
+import { checkLinesAndLayers, lineFixtures } from './lines-and-layers-check.mjs';
 
-const dir = new URL('../../tests/fixtures/lines-and-layers/', import.meta.url);
-const fixtures = readdirSync(dir)
-  .filter((f) => f.endsWith('.json'))
-  .sort()
-  .map((f) => JSON.parse(readFileSync(new URL(f, dir), 'utf8')));
-const of = (operation) => fixtures.filter((f) => f.operation === operation);
 const feature = (geometry, properties = null) => ({ type: 'Feature', properties, geometry });
 const collection = (features) => ({ type: 'FeatureCollection', features });
-const multiPolygon = (coordinates) => ({ type: 'MultiPolygon', coordinates });
 
 test('the fixtures are there', () => {
   for (const operation of ['clip', 'split', 'overlay_layers', 'dissolve']) {
-    assert.ok(of(operation).length >= 4, `only ${of(operation).length} ${operation} fixtures`);
+    const count = lineFixtures.filter((f) => f.operation === operation).length;
+    assert.ok(count >= 4, `only ${count} ${operation} fixtures`);
   }
 });
 
-for (const fixture of of('clip')) {
-  test(`clip: ${fixture.name}`, () => {
-    for (const keep of ['inside', 'outside']) {
-      // Line by line (coordinates of one line give that line's parts), and all at once as a FeatureCollection.
-      fixture.lines.forEach((line, i) => {
-        assert.deepEqual(clip(line, fixture.polygon, { keep, fillRule: fixture.fill_rule }), fixture.expected[keep][i], `${keep}, line ${i}`);
-      });
-      const lines = collection(fixture.lines.map((coordinates, i) => feature({ type: 'LineString', coordinates }, { i })));
-      const clipped = clip(lines, fixture.polygon, { keep, fillRule: fixture.fill_rule });
-      const expected = fixture.expected[keep].flatMap((parts, i) => (parts.length > 0 ? [feature({ type: 'MultiLineString', coordinates: parts }, { i })] : []));
-      assert.deepEqual(clipped, collection(expected), keep);
-    }
-  });
-}
-
-for (const fixture of of('split')) {
-  test(`split: ${fixture.name}`, () => {
-    // Coordinates in, Polygon coordinates out; a Feature in, Polygon features out.
-    const lines = { type: 'MultiLineString', coordinates: fixture.lines };
-    const pieces = split(fixture.polygon, lines, { fillRule: fixture.fill_rule });
-    assert.deepEqual(normalise(pieces), normalise(fixture.expected.pieces));
-    const features = split(feature(multiPolygon(fixture.polygon), { id: 7 }), lines, { fillRule: fixture.fill_rule }).features;
-    assert.deepEqual(normalise(features.map((f) => f.geometry.coordinates)), normalise(fixture.expected.pieces));
-    assert.ok(features.every((f) => f.properties.id === 7 && f.geometry.type === 'Polygon'));
-  });
-}
-
-const layer = (features) => collection(features.map((coordinates, i) => feature(multiPolygon(coordinates), { i })));
-const byTags = (x, y) => {
-  const lists = (f) => [f.properties.aIndices, f.properties.bIndices];
-  const [p, q] = [lists(x), lists(y)];
-  for (let k = 0; k < 2; k++) {
-    for (let i = 0; i < Math.max(p[k].length, q[k].length); i++) {
-      if (p[k][i] === undefined || q[k][i] === undefined) return p[k][i] === undefined ? -1 : 1;
-      if (p[k][i] !== q[k][i]) return p[k][i] - q[k][i];
-    }
-  }
-  return 0;
-};
-
-for (const fixture of of('overlay_layers')) {
-  test(`overlayLayers: ${fixture.name}`, () => {
-    const [a, b] = [layer(fixture.layer_a), layer(fixture.layer_b)];
-    const faces = overlayLayers(a, b, { mode: 'union', fillRule: fixture.fill_rule }).features.sort(byTags);
-    assert.deepEqual(
-      faces.map((f) => [f.properties.aIndices, f.properties.bIndices]),
-      fixture.expected.faces.map((e) => [e.a, e.b]),
-    );
-    faces.forEach((face, k) => {
-      const e = fixture.expected.faces[k];
-      assert.deepEqual(normalise(face.geometry.coordinates), normalise(e.polygon));
-      // The properties of the first covering feature of each layer.
-      assert.deepEqual(face.properties.a, e.a.length > 0 ? { i: e.a[0] } : null);
-      assert.deepEqual(face.properties.b, e.b.length > 0 ? { i: e.b[0] } : null);
-    });
-    const tagged = (keep) => faces.filter((f) => keep(f.properties.aIndices.length > 0, f.properties.bIndices.length > 0)).map((f) => f.properties);
-    for (const [mode, keep] of [
-      ['intersection', (x, y) => x && y],
-      ['identity', (x) => x],
-      ['difference', (x, y) => x && !y],
-      ['xor', (x, y) => x !== y],
-    ]) {
-      const some = overlayLayers(a, b, { mode, fillRule: fixture.fill_rule }).features.sort(byTags);
-      assert.deepEqual(some.map((f) => f.properties), tagged(keep), mode);
-    }
-  });
-}
-
-for (const fixture of of('dissolve')) {
-  test(`dissolve: ${fixture.name}`, () => {
-    const features = collection(fixture.features.map((f) => feature(multiPolygon(f.polygon), { zone: f.key })));
-    const merged = dissolve(features, 'zone', { fillRule: fixture.fill_rule }).features;
-    merged.sort((x, y) => (x.properties.zone < y.properties.zone ? -1 : 1));
-    assert.deepEqual(merged.map((f) => f.properties), fixture.expected.groups.map((g) => ({ zone: g.key })));
-    merged.forEach((f, k) => assert.deepEqual(normalise(f.geometry.coordinates), normalise(fixture.expected.groups[k].polygon)));
-  });
+for (const fixture of lineFixtures) {
+  test(`${fixture.operation}: ${fixture.name}`, () => checkLinesAndLayers(fixture, runLinesAndLayers(fixture, api)));
 }
 
 const square = { type: 'Polygon', coordinates: [[[0, 0], [4, 0], [4, 4], [0, 4], [0, 0]]] };
