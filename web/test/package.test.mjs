@@ -57,7 +57,7 @@ const TARBALL_FILES = [
   'polysweep_wasm_bg.wasm',
 ].sort();
 /** Names every entry exports (among any others the API gains: the entries must agree on those too). */
-const API = ['difference', 'intersection', 'overlayFlat', 'union', 'xor'];
+const API = ['clip', 'difference', 'dissolve', 'intersection', 'overlayFlat', 'overlayLayers', 'split', 'union', 'xor'];
 const assertApi = (names, what) => {
   for (const name of API) assert.ok(names.includes(name), `${what} exports ${name}: ${names.join(', ')}`);
 };
