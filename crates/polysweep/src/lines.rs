@@ -44,7 +44,8 @@ pub enum Boundary {
 /// `lines` clipped by `polygon` (read by `options.fill_rule`): for each line, in order, its parts on the `keep` side,
 /// each running the line's way. A line is cut where it passes from inside the polygon set to outside (or onto its
 /// boundary, which counts as `boundary` says); elsewhere a part goes on through the line's vertices and across
-/// other lines, as the line does. Input vertices come out bit for bit, cut points are the exact crossings rounded
+/// other lines, as the line does; a closed line (its last point its first) is not cut where it closes. Input
+/// vertices come out bit for bit, cut points are the exact crossings rounded
 /// to the nearest floats. Errors name the polygon set as operand 0, and a line as operand 1, polygon `line`,
 /// ring 0.
 ///
@@ -123,7 +124,25 @@ pub fn clip(
         at = end;
     }
     part.close(&mut parts, line);
+    for (line, parts) in lines.iter().zip(&mut parts) {
+        join_around_a_closed_line(line, parts);
+    }
     Ok(parts)
+}
+
+/// A closed line (its last point its first) has no end: its last and first parts, where they meet there, are one.
+fn join_around_a_closed_line(line: &[Point], parts: &mut Vec<LineString>) {
+    let start = line.first();
+    let meet = |last: &LineString, first: &LineString| {
+        last.last() == start && first.first() == start && line.len() > 2 && line.last() == start
+    };
+    if parts.len() >= 2 && meet(&parts[parts.len() - 1], &parts[0]) {
+        let first = parts.remove(0);
+        parts
+            .last_mut()
+            .expect("two parts")
+            .extend_from_slice(&first[1..]);
+    }
 }
 
 /// A part of a line being built by [`clip`]: its points so far, and where it ends if it ends here.

@@ -258,3 +258,29 @@ fn bad_input_is_an_error_that_names_the_line_or_feature() {
         vec![vec![vec![Point::new(0.0, 1.0), Point::new(4.0, 1.0)]]]
     );
 }
+
+#[test]
+fn a_closed_line_is_not_cut_where_it_closes() {
+    let square = multipolygon(&serde_json::json!([[[[0, 0], [4, 0], [4, 4], [0, 4]]]]));
+    let points = |p: &[[f64; 2]]| -> LineString { p.iter().map(|&q| Point::from(q)).collect() };
+    let ring = points(&[[2.0, 2.0], [6.0, 2.0], [6.0, 6.0], [2.0, 6.0], [2.0, 2.0]]);
+    let inside = clip(&[ring.clone()], &square, &ClipOptions::default()).unwrap();
+    assert_eq!(
+        inside,
+        vec![vec![points(&[[2.0, 4.0], [2.0, 2.0], [4.0, 2.0]])]]
+    );
+    let outside = clip(
+        &[ring],
+        &square,
+        &ClipOptions::default().keeping(Keep::Outside),
+    )
+    .unwrap();
+    let around = points(&[[4.0, 2.0], [6.0, 2.0], [6.0, 6.0], [2.0, 6.0], [2.0, 4.0]]);
+    assert_eq!(outside, vec![vec![around]]);
+    // Open, the same points are cut at the start.
+    let open = points(&[[2.0, 2.0], [6.0, 2.0], [6.0, 6.0], [2.0, 6.0], [2.0, 2.5]]);
+    assert_eq!(
+        clip(&[open], &square, &ClipOptions::default()).unwrap()[0].len(),
+        2
+    );
+}
