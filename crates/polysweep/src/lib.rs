@@ -16,6 +16,12 @@
 //! # Ok::<(), polysweep::Error>(())
 //! ```
 //!
+//! ## Lines and layers
+//! The same sweep also clips polylines by a polygon set ([`clip`]), cuts polygons along polylines ([`split`]),
+//! overlays two layers of features keeping, for every face, the features that cover it ([`overlay_layers`]), and
+//! merges features by key ([`dissolve`]). They read the arrangement of all the edges, which the sweep keeps whole
+//! for them, with the input segments on every edge (see docs/architecture.md).
+//!
 //! ## Input
 //! Each operand is a polygon set ([`MultiPolygon`]). Its interior is defined by a [`FillRule`] over all its rings
 //! together: even-odd by default (§7.3 of the paper: ring orientation does not matter, rings may cross themselves
