@@ -58,11 +58,16 @@ fn next_edge(
         e.forward = !e.forward;
         e
     };
-    // Clockwise angle from `back`: right half-plane first, then straight on, then the left half-plane.
+    // Clockwise angle from `back`: right half-plane first, then straight on, then the left half-plane, then back.
+    // (Collinear edges' lines all point the same way, left to right in sweep order: two edges along one line go the
+    // same way when both run along it or both against it.)
     let half = |e: &ResultEdge| match lines.cross(&back, e) {
         Ordering::Less => 0,
-        Ordering::Equal => 1,
+        Ordering::Equal if e.forward != back.forward => 1,
         Ordering::Greater => 2,
+        // Straight back where the walk came from: last, the way out of a dangling end. (Only the arrangement's
+        // walks have both half-edges of an edge, see `arrangement`; a Boolean result never does.)
+        Ordering::Equal => 3,
     };
     candidates.min_by(|&a, &b| {
         let (ea, eb) = (&edges[a], &edges[b]);

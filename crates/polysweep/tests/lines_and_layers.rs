@@ -284,3 +284,41 @@ fn a_closed_line_is_not_cut_where_it_closes() {
         2
     );
 }
+
+#[test]
+fn a_line_that_bends_inside_cuts() {
+    // The square [2, 4]² and lines that bend inside it: the walk at the bend must turn along the line, not back
+    // along the half-edge it came in by (found in the playground).
+    let square = multipolygon(&serde_json::json!([[[[2, 2], [4, 2], [4, 4], [2, 4]]]]));
+    let points = |p: &[[f64; 2]]| -> LineString { p.iter().map(|&q| Point::from(q)).collect() };
+    let areas = |lines: &[LineString]| {
+        let mut areas: Vec<f64> = (split(&square, lines, &Options::default()).unwrap().iter())
+            .map(|p| p.area())
+            .collect();
+        areas.sort_by(f64::total_cmp);
+        areas
+    };
+    assert_eq!(
+        areas(&[points(&[[1.0, 3.0], [3.0, 3.0], [3.0, 7.0]])]),
+        [1.0, 3.0]
+    );
+    assert_eq!(
+        areas(&[points(&[[3.0, 7.0], [3.0, 3.0], [1.0, 3.0]])]),
+        [1.0, 3.0]
+    );
+    assert_eq!(
+        areas(&[points(&[[3.0, 1.0], [3.0, 3.0], [5.0, 3.0]])]),
+        [1.0, 3.0]
+    );
+    // Two lines meeting inside; and a bend down by 1/8, through (2, 2.9375) and (4, 2.9375): below it two
+    // trapezoids of mean height 0.90625.
+    let two = [
+        points(&[[1.0, 3.0], [3.0, 3.0]]),
+        points(&[[3.0, 3.0], [3.0, 7.0]]),
+    ];
+    assert_eq!(areas(&two), [1.0, 3.0]);
+    assert_eq!(
+        areas(&[points(&[[1.0, 3.0], [3.0, 2.875], [5.0, 3.0]])]),
+        [1.8125, 2.1875]
+    );
+}

@@ -205,17 +205,78 @@ proptest! {
     }
 }
 
+proptest! {
+    /// A line through a rectangle whose inner vertices all lie inside it cuts it along every segment between two of
+    /// them (each such segment lies on a closed walk, the line and the boundary, so it separates two faces): just
+    /// either side of such a segment, two different pieces.
+    #[test]
+    fn a_line_bending_inside_separates_its_sides(
+        r in [0..6, 0..6, 0..6, 0..6],
+        inner in prop::collection::vec((0..96, 0..96), 2..=4),
+        ends in [(0..4, 0..96), (0..4, 0..96)],
+    ) {
+        let polygon = rectangle(r);
+        let ring = &polygon.0[0].exterior;
+        let (x0, y0, x1, y1) = (ring[0].x, ring[0].y, ring[2].x, ring[2].y);
+        // Inner vertices strictly inside, on a grid of 1/16; ends outside, beyond one of the four sides.
+        let inside = |(u, v): (i32, i32)| {
+            Point::new(x0 + (x1 - x0) * (1.0 + u as f64) / 98.0, y0 + (y1 - y0) * (1.0 + v as f64) / 98.0)
+        };
+        let outside = |(side, t): (i32, i32)| {
+            let t = x0 + (x1 - x0) * t as f64 / 96.0;
+            let s = y0 + (y1 - y0) * (t - x0) / (x1 - x0);
+            match side {
+                0 => Point::new(x0 - 1.0, s),
+                1 => Point::new(x1 + 1.0, s),
+                2 => Point::new(t, y0 - 1.0),
+                _ => Point::new(t, y1 + 1.0),
+            }
+        };
+        let mut line = vec![outside(ends[0])];
+        line.extend(inner.iter().map(|&q| inside(q)));
+        line.push(outside(ends[1]));
+        let pieces: Vec<MultiPolygon> = (split(&polygon, std::slice::from_ref(&line), &Options::default()).unwrap())
+            .into_iter()
+            .map(|p| MultiPolygon(vec![p]))
+            .collect();
+        let segments: Vec<[Point; 2]> = line.windows(2).map(|w| [w[0], w[1]]).collect();
+        for (k, w) in segments.iter().enumerate().skip(1).take(inner.len() - 1) {
+            let (dx, dy) = (w[1].x - w[0].x, w[1].y - w[0].y);
+            let length = dx.hypot(dy);
+            if length == 0.0 {
+                continue;
+            }
+            let at = Point::new(w[0].x + 0.37 * dx, w[0].y + 0.37 * dy);
+            let far_from_the_rest = segments.iter().enumerate().all(|(j, s)| j == k || distance(at, s) > 1e-3)
+                && !near_boundary(&polygon, at);
+            if !far_from_the_rest {
+                continue;
+            }
+            let side = |sign: f64| Point::new(at.x - sign * dy / length * 1e-5, at.y + sign * dx / length * 1e-5);
+            let holding = |p: Point| -> Vec<usize> {
+                (0..pieces.len()).filter(|&i| inside_even_odd(&pieces[i], p)).collect()
+            };
+            let (left, right) = (holding(side(1.0)), holding(side(-1.0)));
+            prop_assert_eq!(left.len(), 1);
+            prop_assert_eq!(right.len(), 1);
+            prop_assert_ne!(left, right, "segment {} does not cut", k);
+        }
+    }
+}
+
+/// The distance from `p` to the segment `s`.
+fn distance(p: Point, [a, b]: &[Point; 2]) -> f64 {
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    let t = (((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+    let t = if t.is_nan() { 0.0 } else { t };
+    (a.x + t * dx - p.x).hypot(a.y + t * dy - p.y)
+}
+
 /// Is `p` within 1e-9 of an edge of `m`? (Points along a part that ends at a rounded crossing are computed in
 /// floats, so they can be a rounding off an edge the part runs along.)
 fn near_boundary(m: &MultiPolygon, p: Point) -> bool {
     m.0.iter().flat_map(|polygon| polygon.rings()).any(|ring| {
-        (0..ring.len()).any(|i| {
-            let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
-            let (dx, dy) = (b.x - a.x, b.y - a.y);
-            let t = (((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
-            let t = if t.is_nan() { 0.0 } else { t };
-            (a.x + t * dx - p.x).hypot(a.y + t * dy - p.y) <= 1e-9
-        })
+        (0..ring.len()).any(|i| distance(p, &[ring[i], ring[(i + 1) % ring.len()]]) <= 1e-9)
     })
 }
 
