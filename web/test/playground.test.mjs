@@ -1,7 +1,8 @@
 // The playground (index.html, built by web/build-playground.sh) in headless Chromium: it starts without console
 // errors, two squares are drawn with the mouse, each operation is chosen with its key, and the screenshot must be
 // filled with the result colour exactly where that operation's result is and nowhere else; a vertex drag and undo
-// update it; pasted GeoJSON loads, and a bad coordinate shows an error without breaking the app.
+// update it; pasted GeoJSON loads, and a bad coordinate shows an error without breaking the app; a line drawn with
+// the line tool splits the result into pieces of distinct colours and shows its part inside, and undo removes it.
 //
 // Expectations are independent of the app: which of four probe points lies in each result follows from the two
 // squares by hand. The probes sit mid-region, away from edges, so antialiasing cannot touch them.
@@ -29,6 +30,11 @@ const fitted = ([x0, y0], [x1, y1]) =>
   viewOf([(x0 + x1) / 2, (y0 + y1) / 2], 0.9 * Math.min(CANVAS.width / (x1 - x0), CANVAS.height / (y1 - y0)));
 const ERROR_TEXT = [255, 64, 64]; // app.rs ERROR_TEXT: errors in the side panel
 const RESULT_FILL = [250, 190, 40]; // app.rs RESULT_FILL
+const PIECE_FILLS = [
+  RESULT_FILL, [70, 200, 170], [175, 140, 250], [150, 215, 90], [245, 125, 185], [110, 190, 245], [240, 140, 70],
+  [215, 225, 120],
+]; // app.rs PIECE_FILLS
+const LINE_INSIDE = [255, 255, 255]; // app.rs LINE_INSIDE
 
 const SUBJECT = [[0, 0], [4, 0], [4, 4], [0, 4]];
 const CLIPPING = [[2, 2], [6, 2], [6, 6], [2, 6]];
@@ -182,6 +188,30 @@ test('the playground draws two squares with the mouse and fills each operation c
     await page.keyboard.press('KeyF');
     await expectFill(page, ['both', 'onlyP', 'neither'], 'union after undoing the bad paste', afterPaste);
     assert.equal(panelErrorPixels(await screenshot(page)), 0, 'the error is gone');
+
+    // The line tool (key L): a click at (2, -1) and a double-click at (2, 5) draw a line down the middle of P, which
+    // cuts P into two pieces of different colours, each holding one of the probes (1, 1) and (3, 1); the line's
+    // part inside the result is drawn in its own colour. Ctrl+Z removes the line, and the union is one colour again.
+    await page.keyboard.press('KeyL');
+    const [lineStart, lineEnd] = [afterPaste([2, -1]), afterPaste([2, 5])];
+    await page.mouse.click(lineStart.x, lineStart.y);
+    await page.waitForTimeout(400);
+    await page.mouse.dblclick(lineEnd.x, lineEnd.y);
+    const pieceOf = (colour) => PIECE_FILLS.findIndex((fill) => near(colour, fill, 12));
+    const halves = [[1, 1], [3, 1]].map(afterPaste);
+    const onLine = afterPaste([2, 2]);
+    await expectScreen(
+      page,
+      (shot) => {
+        const [left, right] = halves.map(({ x, y }) => pieceOf(shot.at(x, y)));
+        return left >= 0 && right >= 0 && left !== right && near(shot.at(onLine.x, onLine.y), LINE_INSIDE, 30);
+      },
+      (shot) =>
+        `expected two piece colours either side of the line and the line on them: pixels were ` +
+        `${JSON.stringify([...halves, onLine].map(({ x, y }) => shot.at(x, y)))}`,
+    );
+    await page.keyboard.press('Control+KeyZ');
+    await expectFill(page, ['both', 'onlyP', 'neither'], 'union after undoing the line', afterPaste);
     assert.equal(await page.evaluate(() => window.playgroundFailure), undefined);
     assert.deepEqual(problems, [], `the page reported errors:\n${problems.join('\n')}`);
   } finally {

@@ -1,11 +1,12 @@
-//! The playground window: a side panel with the operations, data and figures, and the canvas where the operands are
-//! drawn and edited and the result is filled live.
+//! The playground window: a side panel with the operations, data and figures, and the canvas where the operands and
+//! lines are drawn and edited, the result is filled live, and the lines clip it and split it into pieces.
 //!
 //! Mouse: click adds a vertex to the ring being drawn (of the active operand); click its first vertex, double-click
-//! or press Enter to close it. Drag a vertex to move it, drag elsewhere to pan, scroll or pinch to zoom.
-//! Right-click a vertex (or hover it and press Delete) to delete it. Keys: 1–5 operations, P/Q active operand,
-//! G grid snapping, F fit, Esc drops the ring being drawn, Backspace its last vertex, Ctrl+Z / Ctrl+Shift+Z (or
-//! Ctrl+Y) undo and redo, Ctrl+V pastes GeoJSON into the active operand.
+//! or press Enter to close it. With the line tool, click adds a vertex to the line being drawn; double-click or
+//! Enter finishes it. Drag a vertex to move it, drag elsewhere to pan, scroll or pinch to zoom. Right-click a vertex
+//! (or hover it and press Delete) to delete it. Keys: 1–5 operations, P/Q draw into that operand, L draw lines,
+//! G grid snapping, F fit, Esc drops the ring or line being drawn, Backspace its last vertex, Ctrl+Z /
+//! Ctrl+Shift+Z (or Ctrl+Y) undo and redo, Ctrl+V pastes GeoJSON into the active operand.
 
 mod canvas;
 mod derived;
@@ -33,6 +34,21 @@ const OPERAND_EDGE: [Color32; 2] = [
     Color32::from_rgb(90, 150, 255),
     Color32::from_rgb(255, 110, 90),
 ];
+/// The pieces the lines split the result into, in turn: the first is the result's own colour, so that a result no
+/// line cuts looks as it does without lines. Opaque like the result.
+pub const PIECE_FILLS: [Color32; 8] = [
+    RESULT_FILL,
+    Color32::from_rgb(70, 200, 170),
+    Color32::from_rgb(175, 140, 250),
+    Color32::from_rgb(150, 215, 90),
+    Color32::from_rgb(245, 125, 185),
+    Color32::from_rgb(110, 190, 245),
+    Color32::from_rgb(240, 140, 70),
+    Color32::from_rgb(215, 225, 120),
+];
+/// The parts of the lines inside the result stand out over any piece; the parts outside are dimmed (and dashed).
+pub const LINE_INSIDE: Color32 = Color32::WHITE;
+const LINE_OUTSIDE: Color32 = Color32::from_gray(150);
 /// Errors in the side panel: red, and far enough from Q's salmon that a test can tell them apart.
 pub const ERROR_TEXT: Color32 = Color32::from_rgb(255, 64, 64);
 const BACKGROUND: Color32 = Color32::from_rgb(18, 20, 24);
@@ -40,13 +56,23 @@ const BACKGROUND: Color32 = Color32::from_rgb(18, 20, 24);
 /// Vertex handles are drawn (and grabbed) within this many screen points.
 const HANDLE_RADIUS: f32 = 7.0;
 
+/// What a click on the canvas draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Tool {
+    /// A ring of the active operand.
+    Ring,
+    /// A line.
+    Line,
+}
+
 pub struct Playground {
     pub scene: Scene,
     pub operation: Op,
     pub fill_rule: FillRule,
     /// The operand new rings go to.
     pub active: Operand,
-    /// The ring being drawn, not yet closed.
+    pub tool: Tool,
+    /// The ring or line being drawn, not yet finished: the tool at the finish decides which it becomes.
     pub drawing: Vec<Point>,
     pub snap: bool,
     pub view: View,
@@ -69,6 +95,7 @@ impl Default for Playground {
             operation: Op::Intersection,
             fill_rule: FillRule::EvenOdd,
             active: Operand::Subject,
+            tool: Tool::Ring,
             drawing: Vec::new(),
             snap: true,
             view: View::default(),
@@ -82,7 +109,7 @@ impl Default for Playground {
             path: String::new(),
         };
         playground.status = Some((
-            "Click to draw P; press Q to draw Q. Or pick a preset.".into(),
+            "Click to draw P; press Q to draw Q, L to draw lines. Or pick a preset.".into(),
             false,
         ));
         playground
@@ -111,9 +138,10 @@ impl Playground {
         self.status = Some((format!("{} loaded", preset.label()), false));
     }
 
-    /// Adds a vertex to the ring being drawn, or closes the ring when `at` is on its first vertex.
+    /// Adds a vertex to the ring or line being drawn, or closes the ring when `at` is on its first vertex (a line
+    /// may come back to its start).
     pub fn click(&mut self, at: Point, grab_radius: f64) {
-        if let Some(first) = self.drawing.first() {
+        if let (Tool::Ring, Some(first)) = (self.tool, self.drawing.first()) {
             if self.drawing.len() >= 3 && (first.x - at.x).hypot(first.y - at.y) <= grab_radius {
                 return self.close_ring();
             }
@@ -126,6 +154,14 @@ impl Playground {
     pub fn close_ring(&mut self) {
         let ring = std::mem::take(&mut self.drawing);
         self.scene.add_ring(self.active, ring);
+    }
+
+    /// Finishes what is being drawn: closes the ring, or adds the line to the scene.
+    pub fn finish_drawing(&mut self) {
+        match self.tool {
+            Tool::Ring => self.close_ring(),
+            Tool::Line => self.scene.add_line(std::mem::take(&mut self.drawing)),
+        }
     }
 
     /// Loads GeoJSON text into the active operand.

@@ -1,8 +1,9 @@
 //! The five operations the playground offers, run on the core as it is (no wasm, no JS in between), with the
-//! figures the side panel shows.
+//! figures the side panel shows; and the drawn lines against the result: clipped by it, and cutting it into pieces.
 
 use crate::scene::{Operand, Scene};
-use polysweep::{overlay_with_stats, Error, FillRule, MultiPolygon, Operation, Options};
+use polysweep::{clip, overlay_with_stats, split, ClipOptions, Error, FillRule, Keep};
+use polysweep::{LineString, MultiPolygon, Operation, Options, Polygon};
 use web_time::Instant;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -88,6 +89,30 @@ pub fn region(scene: &Scene, which: Operand, fill_rule: FillRule) -> Result<Mult
         Operand::Subject => polysweep::overlay(Operation::Union, operand, &empty, &options),
         Operand::Clipping => polysweep::overlay(Operation::Union, &empty, operand, &options),
     }
+}
+
+/// The lines against a result: their parts inside it and outside it (of all lines together), and the result split
+/// along them.
+#[derive(Clone, Debug)]
+pub struct Cut {
+    pub inside: Vec<LineString>,
+    pub outside: Vec<LineString>,
+    pub pieces: Vec<Polygon>,
+}
+
+/// Clips `lines` by `result` and splits `result` along them. The result is a valid polygon set, which the default
+/// even-odd rule reads as it is; the fill rule that made it could read it otherwise (negative: as nothing). Errors
+/// name a line as operand 1, polygon `line`.
+pub fn cut(result: &MultiPolygon, lines: &[LineString]) -> Result<Cut, Error> {
+    let parts = |keep| -> Result<Vec<LineString>, Error> {
+        let per_line = clip(lines, result, &ClipOptions::default().keeping(keep))?;
+        Ok(per_line.into_iter().flatten().collect())
+    };
+    Ok(Cut {
+        inside: parts(Keep::Inside)?,
+        outside: parts(Keep::Outside)?,
+        pieces: split(result, lines, &Options::default())?,
+    })
 }
 
 fn swap_operands(mut error: Error) -> Error {

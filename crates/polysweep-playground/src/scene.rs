@@ -1,13 +1,15 @@
-//! What the user edits: the two operands of the Boolean operation, as polysweep polygon sets, with undo and redo.
+//! What the user edits: the two operands of the Boolean operation, as polysweep polygon sets, and the lines drawn
+//! to clip by the result and split it along, with undo and redo.
 //!
 //! A vertex is addressed exactly as the core's errors address it — operand, polygon, ring (0 is the exterior,
 //! k is hole k − 1), vertex — so an error from the core points straight at the vertex to fix. Rings are kept open
 //! (no repeated closing point) so that every vertex is one handle; the core accepts open rings.
 //!
-//! Every change goes through `Scene::edit`, which records the state before it for undo. A vertex drag is one
-//! step: [`Scene::checkpoint`] records it when the drag starts, and the moves change the operands in place.
+//! Every change goes through `Scene::edit` or `Scene::edit_lines`, which record the state before it for undo. A
+//! vertex drag is one step: [`Scene::checkpoint`] records it when the drag starts, and the moves change the scene in
+//! place.
 
-use polysweep::{Location, MultiPolygon, Point, Polygon, Ring};
+use polysweep::{LineString, Location, MultiPolygon, Point, Polygon, Ring};
 
 /// Which operand: the subject P or the clipping polygon Q.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -57,27 +59,66 @@ impl VertexId {
     }
 }
 
+/// One vertex of one drawn line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LineVertex {
+    pub line: usize,
+    pub vertex: usize,
+}
+
+impl LineVertex {
+    /// The line vertex an error of [`polysweep::clip`] or [`polysweep::split`] names (a line is operand 1, polygon
+    /// `line`), if it still exists in `scene`.
+    pub fn from_location(scene: &Scene, at: &Location) -> Option<LineVertex> {
+        let id = LineVertex {
+            line: at.polygon,
+            vertex: at.vertex,
+        };
+        (at.operand == 1 && scene.line_point(id).is_some()).then_some(id)
+    }
+}
+
 /// Undo steps kept: at most this many, and only as many as fit in [`HISTORY_VERTICES`], so that a history of edits
 /// on large data (the 59,212-vertex land) cannot exhaust the browser's memory.
 const UNDO_DEPTH: usize = 200;
 const HISTORY_VERTICES: usize = 4_000_000;
 
-/// The two operands and their history.
+/// What one undo step restores.
+#[derive(Clone, Debug, Default, PartialEq)]
+struct State {
+    operands: [MultiPolygon; 2],
+    lines: Vec<LineString>,
+}
+
+impl State {
+    fn vertex_count(&self) -> usize {
+        let lines: usize = self.lines.iter().map(Vec::len).sum();
+        self.operands[0].vertex_count() + self.operands[1].vertex_count() + lines
+    }
+}
+
+/// The two operands, the lines and their history.
 #[derive(Clone, Debug, Default)]
 pub struct Scene {
-    operands: [MultiPolygon; 2],
-    undo: Vec<[MultiPolygon; 2]>,
-    redo: Vec<[MultiPolygon; 2]>,
+    state: State,
+    undo: Vec<State>,
+    redo: Vec<State>,
     /// Counts undo steps recorded, undone and redone: a vertex id taken before a change may no longer be valid.
     generation: u64,
     /// Per operand, bumped whenever it changes: what is derived from an operand (its fill, the result) is
     /// recomputed when its revision moves, without keeping a copy of the operand to compare against.
     revisions: [u64; 2],
+    /// Bumped whenever the lines change, as `revisions` are for the operands.
+    lines_revision: u64,
 }
 
 impl Scene {
     pub fn operand(&self, which: Operand) -> &MultiPolygon {
-        &self.operands[which.index()]
+        &self.state.operands[which.index()]
+    }
+
+    pub fn lines(&self) -> &[LineString] {
+        &self.state.lines
     }
 
     /// Changes whenever the operand does.
@@ -85,33 +126,49 @@ impl Scene {
         self.revisions[which.index()]
     }
 
+    /// Changes whenever the lines do.
+    pub fn lines_revision(&self) -> u64 {
+        self.lines_revision
+    }
+
     /// Changes the `touched` operands as one undoable step.
     fn edit(&mut self, touched: &[Operand], change: impl FnOnce(&mut [MultiPolygon; 2])) {
         self.checkpoint();
-        change(&mut self.operands);
+        change(&mut self.state.operands);
         for which in touched {
             self.revisions[which.index()] += 1;
         }
     }
 
-    /// Swaps in a state from the history, bumping the revision of each operand it changes.
-    fn restore(&mut self, state: [MultiPolygon; 2]) -> [MultiPolygon; 2] {
-        for ((revision, new), old) in self.revisions.iter_mut().zip(&state).zip(&self.operands) {
+    /// Changes the lines as one undoable step.
+    fn edit_lines(&mut self, change: impl FnOnce(&mut Vec<LineString>)) {
+        self.checkpoint();
+        change(&mut self.state.lines);
+        self.lines_revision += 1;
+    }
+
+    /// Swaps in a state from the history, bumping the revision of each operand it changes, and of the lines.
+    fn restore(&mut self, state: State) -> State {
+        let operands = state.operands.iter().zip(&self.state.operands);
+        for (revision, (new, old)) in self.revisions.iter_mut().zip(operands) {
             if new != old {
                 *revision += 1;
             }
         }
+        if state.lines != self.state.lines {
+            self.lines_revision += 1;
+        }
         self.generation += 1;
-        std::mem::replace(&mut self.operands, state)
+        std::mem::replace(&mut self.state, state)
     }
 
-    /// Records the current state for undo; a drag calls this once, then [`Scene::move_vertex`] on every move.
+    /// Records the current state for undo; a drag calls this once, then [`Scene::move_vertex`] (or
+    /// [`Scene::move_line_vertex`]) on every move.
     pub fn checkpoint(&mut self) {
-        self.undo.push(self.operands.clone());
-        let size = |step: &[MultiPolygon; 2]| step[0].vertex_count() + step[1].vertex_count();
+        self.undo.push(self.state.clone());
         while self.undo.len() > 1
             && (self.undo.len() > UNDO_DEPTH
-                || self.undo.iter().map(size).sum::<usize>() > HISTORY_VERTICES)
+                || self.undo.iter().map(State::vertex_count).sum::<usize>() > HISTORY_VERTICES)
         {
             self.undo.remove(0);
         }
@@ -171,8 +228,8 @@ impl Scene {
 
     /// Moves a vertex (within the current undo step).
     pub fn move_vertex(&mut self, id: VertexId, to: Point) {
-        if let Some(p) =
-            ring_mut(&mut self.operands[id.operand.index()], id).and_then(|r| r.get_mut(id.vertex))
+        if let Some(p) = ring_mut(&mut self.state.operands[id.operand.index()], id)
+            .and_then(|r| r.get_mut(id.vertex))
         {
             *p = to;
             self.revisions[id.operand.index()] += 1;
@@ -255,6 +312,66 @@ impl Scene {
                             ));
                         }
                     }
+                }
+            }
+        }
+        best.map(|(_, id)| id)
+    }
+
+    /// Adds a line drawn by the user, as one undo step. A line without two distinct vertices, which has no length
+    /// to clip or cut with, is dropped.
+    pub fn add_line(&mut self, line: LineString) {
+        if line.iter().all(|p| *p == line[0]) {
+            return;
+        }
+        self.edit_lines(|lines| lines.push(line));
+    }
+
+    /// Removes every line, as one undo step (none when there are no lines).
+    pub fn clear_lines(&mut self) {
+        if !self.state.lines.is_empty() {
+            self.edit_lines(Vec::clear);
+        }
+    }
+
+    pub fn line_point(&self, id: LineVertex) -> Option<Point> {
+        self.state.lines.get(id.line)?.get(id.vertex).copied()
+    }
+
+    /// Moves a vertex of a line (within the current undo step).
+    pub fn move_line_vertex(&mut self, id: LineVertex, to: Point) {
+        if let Some(p) = self
+            .state
+            .lines
+            .get_mut(id.line)
+            .and_then(|l| l.get_mut(id.vertex))
+        {
+            *p = to;
+            self.lines_revision += 1;
+        }
+    }
+
+    /// Deletes a vertex of a line as one undo step; a line left with fewer than 2 vertices goes with it.
+    pub fn delete_line_vertex(&mut self, id: LineVertex) {
+        if self.line_point(id).is_none() {
+            return;
+        }
+        self.edit_lines(|lines| {
+            lines[id.line].remove(id.vertex);
+            if lines[id.line].len() < 2 {
+                lines.remove(id.line);
+            }
+        });
+    }
+
+    /// The line vertex nearest to `at` within `radius`.
+    pub fn line_vertex_near(&self, at: Point, radius: f64) -> Option<LineVertex> {
+        let mut best: Option<(f64, LineVertex)> = None;
+        for (l, line) in self.state.lines.iter().enumerate() {
+            for (v, q) in line.iter().enumerate() {
+                let d = (q.x - at.x).hypot(q.y - at.y);
+                if d <= radius && best.is_none_or(|(b, _)| d < b) {
+                    best = Some((d, LineVertex { line: l, vertex: v }));
                 }
             }
         }

@@ -1,16 +1,15 @@
 //! The playground's logic without a window: drawing, editing, undo, the five operations, loading, errors, and
 //! whole egui frames driven by synthetic mouse and keyboard events.
 
-use eframe::egui::{self, Event, Key, Modifiers, PointerButton, Pos2, RawInput, Rect, Vec2};
-use polysweep::{FillRule, Point};
+mod common;
+
+use common::{click_at, frame, key, p, SCREEN};
+use eframe::egui::{self, Key, PointerButton, Pos2, Vec2};
+use polysweep::FillRule;
 use polysweep_playground::operation::{self, Op};
 use polysweep_playground::presets::Preset;
 use polysweep_playground::scene::{Operand, VertexId};
 use polysweep_playground::Playground;
-
-fn p(x: f64, y: f64) -> Point {
-    Point::new(x, y)
-}
 
 /// Draws an axis-aligned square by clicks, closing it by clicking its first vertex again.
 fn draw_square(app: &mut Playground, operand: Operand, x: f64, y: f64, size: f64) {
@@ -241,47 +240,6 @@ fn presets_load_and_compute() {
 
 // ---- whole frames through egui ----
 
-const SCREEN: Vec2 = Vec2::new(1200.0, 800.0);
-
-fn frame(ctx: &egui::Context, app: &mut Playground, events: Vec<Event>) {
-    let input = RawInput {
-        screen_rect: Some(Rect::from_min_size(Pos2::ZERO, SCREEN)),
-        events,
-        ..Default::default()
-    };
-    let mut output = ctx.run_ui(input, |ui| app.show(ui));
-    // Tessellate as a renderer would, so that the meshes the app paints are checked too.
-    for primitive in ctx.tessellate(std::mem::take(&mut output.shapes), output.pixels_per_point) {
-        if let egui::epaint::Primitive::Mesh(mesh) = primitive.primitive {
-            assert!(mesh.is_valid(), "a mesh indexes past its vertices");
-        }
-    }
-    output.textures_delta.clear();
-}
-
-fn click_at(ctx: &egui::Context, app: &mut Playground, at: Pos2) {
-    let button = |pressed| Event::PointerButton {
-        pos: at,
-        button: PointerButton::Primary,
-        pressed,
-        modifiers: Modifiers::NONE,
-    };
-    frame(ctx, app, vec![Event::PointerMoved(at)]);
-    frame(ctx, app, vec![button(true)]);
-    frame(ctx, app, vec![button(false)]);
-}
-
-fn key(ctx: &egui::Context, app: &mut Playground, key: Key) {
-    let event = |pressed| Event::Key {
-        key,
-        physical_key: None,
-        pressed,
-        repeat: false,
-        modifiers: Modifiers::NONE,
-    };
-    frame(ctx, app, vec![event(true), event(false)]);
-}
-
 #[test]
 fn the_mouse_draws_and_the_keys_switch_operations() {
     let ctx = egui::Context::default();
@@ -291,12 +249,12 @@ fn the_mouse_draws_and_the_keys_switch_operations() {
     let canvas_center = Pos2::new(280.0 + (SCREEN.x - 280.0) / 2.0, SCREEN.y / 2.0);
     let screen = |x: f32, y: f32| canvas_center + Vec2::new((x - 5.0) * 30.0, -(y - 5.0) * 30.0);
     for (x, y) in [(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (0.0, 4.0), (0.0, 0.0)] {
-        click_at(&ctx, &mut app, screen(x, y));
+        click_at(&ctx, &mut app, screen(x, y), PointerButton::Primary);
     }
     key(&ctx, &mut app, Key::Q);
     assert_eq!(app.active, Operand::Clipping);
     for (x, y) in [(2.0, 2.0), (6.0, 2.0), (6.0, 6.0), (2.0, 6.0)] {
-        click_at(&ctx, &mut app, screen(x, y));
+        click_at(&ctx, &mut app, screen(x, y), PointerButton::Primary);
     }
     key(&ctx, &mut app, Key::Enter);
     assert_eq!(

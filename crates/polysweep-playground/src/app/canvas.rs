@@ -1,13 +1,15 @@
-//! The canvas: fitting the view to the data, then painting the grid, the operands' fills and outlines, the result,
-//! the ring being drawn, the vertex handles and the vertex an error names.
+//! The canvas: fitting the view to the data, then painting the grid, the operands' fills and outlines, the result
+//! (or its pieces, when lines cut it), the lines' parts inside and outside it, the ring or line being drawn, the
+//! vertex handles and the vertex an error names.
 
-use super::input::Drag;
+use super::input::{Drag, Handle};
 use super::{
-    Playground, BACKGROUND, HANDLE_RADIUS, OPERAND_EDGE, OPERAND_FILL, RESULT_EDGE, RESULT_FILL,
+    Playground, Tool, BACKGROUND, HANDLE_RADIUS, LINE_INSIDE, LINE_OUTSIDE, OPERAND_EDGE,
+    OPERAND_FILL, PIECE_FILLS, RESULT_EDGE, RESULT_FILL,
 };
-use crate::scene::{Operand, VertexId};
+use crate::scene::{LineVertex, Operand, VertexId};
 use eframe::egui::{self, Color32, Mesh, Pos2, Rect, Sense, Shape, Stroke};
-use polysweep::{MultiPolygon, Point};
+use polysweep::{Point, Polygon};
 
 /// Above this many vertices an operand's handles are not drawn: they would cover the picture.
 const MAX_HANDLES: usize = 5000;
@@ -23,6 +25,7 @@ impl Playground {
                     .iter()
                     .flat_map(|p| p.rings().flatten())
             })
+            .chain(self.scene.lines().iter().flatten())
             .chain(&self.drawing);
         points.fold(None, |b, p| {
             let (lo, hi) = b.unwrap_or((*p, *p));
@@ -49,11 +52,18 @@ impl Playground {
             ui.ctx()
                 .request_repaint_after(std::time::Duration::from_millis(160));
         }
-        let error_at = match &self.derived.outcome {
-            Some(Err(e)) => e.location(),
+        // The operation's errors name an operand's vertex; the cut's (the result being valid) a line's.
+        let error_vertex = match (&self.derived.outcome, &self.derived.cut) {
+            (Some(Err(e)), _) => e
+                .location()
+                .and_then(|at| VertexId::from_location(&self.scene, &at))
+                .map(Handle::Ring),
+            (_, Some(Err(e))) => e
+                .location()
+                .and_then(|at| LineVertex::from_location(&self.scene, &at))
+                .map(Handle::Line),
             _ => None,
         };
-        let error_vertex = error_at.and_then(|at| VertexId::from_location(&self.scene, &at));
         let view = self.view;
         let to_screen = |p: Point| view.to_screen(canvas, p);
 
@@ -64,22 +74,33 @@ impl Playground {
         for (fill, color) in self.derived.region_fills.iter().zip(OPERAND_FILL) {
             painter.add(Shape::mesh(fill.mesh(to_screen, color)));
         }
-        painter.add(Shape::mesh(
-            self.derived.result_fill.mesh(to_screen, RESULT_FILL),
-        ));
-        if let Some(Ok(outcome)) = &self.derived.outcome {
-            paint_outline(
-                &painter,
-                canvas,
-                &outcome.result,
-                to_screen,
-                Stroke::new(1.0, RESULT_EDGE),
-            );
+        let result_edge = Stroke::new(1.0, RESULT_EDGE);
+        match (&self.derived.cut, &self.derived.outcome) {
+            (Some(Ok(cut)), _) => {
+                let colours = PIECE_FILLS.iter().cycle();
+                for (fill, colour) in self.derived.piece_fills.iter().zip(colours) {
+                    painter.add(Shape::mesh(fill.mesh(to_screen, *colour)));
+                }
+                paint_outline(&painter, canvas, &cut.pieces, to_screen, result_edge);
+            }
+            (_, Some(Ok(outcome))) => {
+                painter.add(Shape::mesh(
+                    self.derived.result_fill.mesh(to_screen, RESULT_FILL),
+                ));
+                paint_outline(&painter, canvas, &outcome.result.0, to_screen, result_edge);
+            }
+            _ => {}
         }
         for which in [Operand::Subject, Operand::Clipping] {
             let operand = self.scene.operand(which);
             let edge = OPERAND_EDGE[which.index()];
-            paint_outline(&painter, canvas, operand, to_screen, Stroke::new(1.5, edge));
+            paint_outline(
+                &painter,
+                canvas,
+                &operand.0,
+                to_screen,
+                Stroke::new(1.5, edge),
+            );
             if operand.vertex_count() <= MAX_HANDLES {
                 let radius = if which == self.active { 3.5 } else { 2.5 };
                 for p in operand.0.iter().flat_map(|p| p.rings().flatten()) {
@@ -87,14 +108,15 @@ impl Playground {
                 }
             }
         }
+        self.paint_lines(&painter, to_screen);
         self.paint_drawing(&painter, &response, to_screen);
         let pointer_world = response.hover_pos().map(|p| self.view.to_world(canvas, p));
-        let hovered = pointer_world.and_then(|p| self.vertex_under(p));
+        let hovered = pointer_world.and_then(|p| self.handle_under(p));
         if let Some(id) = hovered.or(match self.drag {
             Some(Drag::Vertex(id, _)) => Some(id),
             _ => None,
         }) {
-            if let Some(p) = self.scene.point(id) {
+            if let Some(p) = id.point(&self.scene) {
                 painter.circle_stroke(
                     to_screen(p),
                     HANDLE_RADIUS,
@@ -102,7 +124,7 @@ impl Playground {
                 );
             }
         }
-        if let Some(p) = error_vertex.and_then(|id| self.scene.point(id)) {
+        if let Some(p) = error_vertex.and_then(|id| id.point(&self.scene)) {
             painter.circle_stroke(to_screen(p), 10.0, Stroke::new(3.0, Color32::RED));
         }
         if !up_to_date {
@@ -143,6 +165,32 @@ impl Playground {
         }
     }
 
+    /// The lines' parts inside the result solid and bright, the parts outside dashed and dim, and their vertices.
+    fn paint_lines(&self, painter: &egui::Painter, to_screen: impl Fn(Point) -> Pos2) {
+        let on_screen = |line: &[Point]| line.iter().map(|p| to_screen(*p)).collect::<Vec<_>>();
+        let outside = Stroke::new(1.5, LINE_OUTSIDE);
+        match &self.derived.cut {
+            Some(Ok(cut)) => {
+                for part in &cut.outside {
+                    painter.extend(Shape::dashed_line(&on_screen(part), outside, 6.0, 4.0));
+                }
+                for part in &cut.inside {
+                    painter.add(Shape::line(on_screen(part), Stroke::new(2.5, LINE_INSIDE)));
+                }
+            }
+            // No result to clip by (or an error): the lines as drawn, dimmed.
+            _ => {
+                for line in self.scene.lines() {
+                    painter.extend(Shape::dashed_line(&on_screen(line), outside, 6.0, 4.0));
+                }
+            }
+        }
+        let radius = if self.tool == Tool::Line { 3.5 } else { 2.5 };
+        for p in self.scene.lines().iter().flatten() {
+            painter.circle_filled(to_screen(*p), radius, LINE_INSIDE);
+        }
+    }
+
     fn paint_drawing(
         &self,
         painter: &egui::Painter,
@@ -152,7 +200,10 @@ impl Playground {
         if self.drawing.is_empty() {
             return;
         }
-        let edge = OPERAND_EDGE[self.active.index()];
+        let edge = match self.tool {
+            Tool::Ring => OPERAND_EDGE[self.active.index()],
+            Tool::Line => LINE_INSIDE,
+        };
         let mut points: Vec<Pos2> = self.drawing.iter().map(|p| to_screen(*p)).collect();
         if let Some(pointer) = response.hover_pos() {
             points.push(pointer);
@@ -161,27 +212,31 @@ impl Playground {
         for p in &self.drawing {
             painter.circle_filled(to_screen(*p), 3.5, edge);
         }
-        painter.circle_stroke(
-            to_screen(self.drawing[0]),
-            HANDLE_RADIUS,
-            Stroke::new(1.5, edge),
-        );
+        // A click on the first vertex closes a ring.
+        if self.tool == Tool::Ring {
+            painter.circle_stroke(
+                to_screen(self.drawing[0]),
+                HANDLE_RADIUS,
+                Stroke::new(1.5, edge),
+            );
+        }
     }
 }
 
-/// Draws every ring of `m` that is on screen, as one mesh of a thin quad per edge. egui's own path stroke joins
-/// edges with miters, which shoot far out at the hairpin turns of real coastlines; separate quads have no joins.
-/// Vertices closer than a pixel to the last one drawn are skipped: zoomed out, a coastline has many per pixel.
+/// Draws every ring of `polygons` that is on screen, as one mesh of a thin quad per edge. egui's own path stroke
+/// joins edges with miters, which shoot far out at the hairpin turns of real coastlines; separate quads have no
+/// joins. Vertices closer than a pixel to the last one drawn are skipped: zoomed out, a coastline has many per
+/// pixel.
 fn paint_outline(
     painter: &egui::Painter,
     canvas: Rect,
-    m: &MultiPolygon,
+    polygons: &[Polygon],
     to_screen: impl Fn(Point) -> Pos2,
     stroke: Stroke,
 ) {
     let mut mesh = Mesh::default();
     let mut points: Vec<Pos2> = Vec::new();
-    for ring in m.0.iter().flat_map(|p| p.rings()) {
+    for ring in polygons.iter().flat_map(|p| p.rings()) {
         points.clear();
         for p in ring.iter().chain(ring.first()) {
             let q = to_screen(*p);

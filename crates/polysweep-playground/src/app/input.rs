@@ -1,9 +1,9 @@
-//! What the keys and the pointer do: the shortcuts, and on the canvas drawing, dragging vertices, deleting them,
-//! panning and zooming (snapping to the grid where a vertex is placed).
+//! What the keys and the pointer do: the shortcuts, and on the canvas drawing, dragging vertices (of rings and of
+//! lines), deleting them, panning and zooming (snapping to the grid where a vertex is placed).
 
-use super::{Playground, HANDLE_RADIUS};
+use super::{Playground, Tool, HANDLE_RADIUS};
 use crate::operation::Op;
-use crate::scene::{Operand, VertexId};
+use crate::scene::{LineVertex, Operand, Scene, VertexId};
 use eframe::egui::{self, Key, Modifiers};
 use polysweep::Point;
 
@@ -11,8 +11,38 @@ use polysweep::Point;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) enum Drag {
     /// Moving a vertex, since the scene's generation given (an undo, delete or load meanwhile ends the drag).
-    Vertex(VertexId, u64),
+    Vertex(Handle, u64),
     Pan,
+}
+
+/// A vertex the pointer can grab: of an operand's ring or of a line.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Handle {
+    Ring(VertexId),
+    Line(LineVertex),
+}
+
+impl Handle {
+    pub(super) fn point(self, scene: &Scene) -> Option<Point> {
+        match self {
+            Handle::Ring(id) => scene.point(id),
+            Handle::Line(id) => scene.line_point(id),
+        }
+    }
+
+    fn move_to(self, scene: &mut Scene, to: Point) {
+        match self {
+            Handle::Ring(id) => scene.move_vertex(id, to),
+            Handle::Line(id) => scene.move_line_vertex(id, to),
+        }
+    }
+
+    fn delete(self, scene: &mut Scene) {
+        match self {
+            Handle::Ring(id) => scene.delete_vertex(id),
+            Handle::Line(id) => scene.delete_line_vertex(id),
+        }
+    }
 }
 
 impl Playground {
@@ -52,9 +82,14 @@ impl Playground {
             }
             if i.consume_key(Modifiers::NONE, Key::P) {
                 self.active = Operand::Subject;
+                self.tool = Tool::Ring;
             }
             if i.consume_key(Modifiers::NONE, Key::Q) {
                 self.active = Operand::Clipping;
+                self.tool = Tool::Ring;
+            }
+            if i.consume_key(Modifiers::NONE, Key::L) {
+                self.tool = Tool::Line;
             }
             if i.consume_key(Modifiers::NONE, Key::G) {
                 self.snap = !self.snap;
@@ -63,7 +98,7 @@ impl Playground {
                 self.fit_pending = true;
             }
             if i.consume_key(Modifiers::NONE, Key::Enter) {
-                self.close_ring();
+                self.finish_drawing();
             }
             if i.consume_key(Modifiers::NONE, Key::Escape) {
                 self.drawing.clear();
@@ -74,9 +109,27 @@ impl Playground {
         });
     }
 
-    pub(super) fn vertex_under(&self, at: Point) -> Option<VertexId> {
-        self.scene
-            .vertex_near(at, f64::from(HANDLE_RADIUS) / self.view.scale, self.active)
+    /// The vertex under the pointer: the nearest of a ring or a line, and on a tie the kind the tool draws.
+    pub(super) fn handle_under(&self, at: Point) -> Option<Handle> {
+        let radius = f64::from(HANDLE_RADIUS) / self.view.scale;
+        let ring = self
+            .scene
+            .vertex_near(at, radius, self.active)
+            .map(Handle::Ring);
+        let line = self.scene.line_vertex_near(at, radius).map(Handle::Line);
+        let (preferred, other) = match self.tool {
+            Tool::Ring => (ring, line),
+            Tool::Line => (line, ring),
+        };
+        let distance = |h: Option<Handle>| {
+            h.and_then(|h| h.point(&self.scene))
+                .map_or(f64::INFINITY, |p| (p.x - at.x).hypot(p.y - at.y))
+        };
+        if distance(other) < distance(preferred) {
+            other
+        } else {
+            preferred
+        }
     }
 
     pub(super) fn interact(&mut self, ui: &egui::Ui, response: &egui::Response) {
@@ -99,7 +152,7 @@ impl Playground {
             let origin = ui
                 .input(|i| i.pointer.press_origin())
                 .unwrap_or(canvas.center());
-            let on_vertex = self.vertex_under(self.view.to_world(canvas, origin));
+            let on_vertex = self.handle_under(self.view.to_world(canvas, origin));
             self.drag = match on_vertex {
                 Some(id) if response.drag_started_by(egui::PointerButton::Primary) => {
                     self.scene.checkpoint();
@@ -115,8 +168,10 @@ impl Playground {
                 }
                 (Some(Drag::Vertex(id, _)), Some(pos)) => {
                     let at = self.view.to_world(canvas, pos);
-                    self.scene
-                        .move_vertex(id, if self.snap { self.view.snap(at) } else { at });
+                    id.move_to(
+                        &mut self.scene,
+                        if self.snap { self.view.snap(at) } else { at },
+                    );
                 }
                 (Some(Drag::Pan), _) => self.view.pan(response.drag_delta()),
                 _ => {}
@@ -128,14 +183,16 @@ impl Playground {
         let pointer = response.interact_pointer_pos().or(response.hover_pos());
         let Some(pointer) = pointer else { return };
         let at = self.view.to_world(canvas, pointer);
-        if response.double_clicked() {
-            // The double-click's first click added its vertex; the second closes the ring.
-            self.close_ring();
+        // egui counts a double-click right after a quick click elsewhere as a triple-click: either way this click
+        // repeats the one before on the same spot.
+        if response.double_clicked() || response.triple_clicked() {
+            // The double-click's first click added its vertex; the second finishes the ring or line.
+            self.finish_drawing();
         } else if response.clicked() {
             self.click(at, grab);
         } else if response.secondary_clicked() {
-            match self.vertex_under(at) {
-                Some(id) => self.scene.delete_vertex(id),
+            match self.handle_under(at) {
+                Some(id) => id.delete(&mut self.scene),
                 None => {
                     self.drawing.pop();
                 }
@@ -144,8 +201,8 @@ impl Playground {
         let delete =
             !ui.ctx().egui_wants_keyboard_input() && ui.input(|i| i.key_pressed(Key::Delete));
         if response.hovered() && self.drag.is_none() && delete {
-            if let Some(id) = self.vertex_under(at) {
-                self.scene.delete_vertex(id);
+            if let Some(id) = self.handle_under(at) {
+                id.delete(&mut self.scene);
             }
         }
     }

@@ -1,7 +1,8 @@
-//! The side panel: the operation and fill rule, drawing options, undo and redo, presets, GeoJSON in and out, the
-//! figures of the result and the status line; and the window GeoJSON is pasted into.
+//! The side panel: the operation and fill rule, what to draw and drawing options, undo and redo, presets, GeoJSON
+//! in and out, the figures of the result and of the lines against it, and the status line; and the window GeoJSON
+//! is pasted into.
 
-use super::{Playground, ERROR_TEXT, OPERAND_EDGE};
+use super::{Playground, Tool, ERROR_TEXT, LINE_INSIDE, OPERAND_EDGE};
 use crate::operation::Op;
 use crate::presets::Preset;
 use crate::scene::Operand;
@@ -42,11 +43,19 @@ impl Playground {
         ui.separator();
 
         ui.strong("Drawing");
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             ui.label("into");
             for which in [Operand::Subject, Operand::Clipping] {
                 let label = egui::RichText::new(which.name()).color(OPERAND_EDGE[which.index()]);
-                ui.radio_value(&mut self.active, which, label);
+                let selected = self.tool == Tool::Ring && self.active == which;
+                if ui.radio(selected, label).clicked() {
+                    self.active = which;
+                    self.tool = Tool::Ring;
+                }
+            }
+            let label = egui::RichText::new("lines  [L]").color(LINE_INSIDE);
+            if ui.radio(self.tool == Tool::Line, label).clicked() {
+                self.tool = Tool::Line;
             }
         });
         ui.checkbox(&mut self.snap, "snap to grid  [G]");
@@ -77,6 +86,15 @@ impl Playground {
                 if ui.button(name).clicked() {
                     self.scene.replace(which, MultiPolygon::default());
                 }
+            }
+            if ui
+                .add_enabled(
+                    !self.scene.lines().is_empty(),
+                    egui::Button::new("Clear lines"),
+                )
+                .clicked()
+            {
+                self.scene.clear_lines();
             }
         });
         ui.separator();
@@ -112,8 +130,9 @@ impl Playground {
         }
         ui.separator();
         ui.small(
-            "Click: add vertex · click first vertex / double-click / Enter: close ring · drag vertex: move · \
-             right-click vertex or Delete: remove · drag: pan · scroll: zoom · Esc: drop ring · Ctrl+Z / Ctrl+Y",
+            "Click: add vertex · click first vertex / double-click / Enter: close ring (finish line) · drag vertex: \
+             move · right-click vertex or Delete: remove · drag: pan · scroll: zoom · Esc: drop ring or line · \
+             L: draw lines, P / Q: draw rings · Ctrl+Z / Ctrl+Y",
         );
     }
 
@@ -179,6 +198,18 @@ impl Playground {
                 (
                     "fill triangles",
                     self.derived.result_fill.triangle_count().to_string(),
+                ),
+            ]),
+            Some(Err(e)) => rows.push(("error", e.to_string())),
+            None => {}
+        }
+        match &self.derived.cut {
+            Some(Ok(cut)) => rows.extend([
+                ("lines", self.scene.lines().len().to_string()),
+                ("pieces", cut.pieces.len().to_string()),
+                (
+                    "line parts in / out",
+                    format!("{} / {}", cut.inside.len(), cut.outside.len()),
                 ),
             ]),
             Some(Err(e)) => rows.push(("error", e.to_string())),
