@@ -51,6 +51,7 @@ fi
 .venv/bin/python -c 'import shapely, sys; sys.exit(shapely.__version__ != "2.2.0")' 2>/dev/null \
   || .venv/bin/pip install --quiet shapely==2.2.0
 .venv/bin/python tests/differential/run.py
+.venv/bin/python tests/differential/lines_and_layers.py
 # The layer-overlay benchmark at its small size (it asserts nothing: it must run, and prints its agreement with GEOS).
 node web/bench/layers.mjs --quick
 

@@ -792,12 +792,13 @@ def check_case(case, res, exact_all=False):
 # main
 # ==============================================================================================================
 
-def run_driver(cases):
+def run_driver(cases, driver="polysweep-driver.mjs", payload=lambda c: {"steps": c["steps"]}):
+    """Runs a Node driver of this folder on the cases (each sent as payload(case)) in one process; its output."""
     with tempfile.TemporaryDirectory(prefix="polysweep-differential-") as tmp:
         cin, cout = os.path.join(tmp, "cases.json"), os.path.join(tmp, "results.json")
         with open(cin, "w") as f:
-            json.dump([{"steps": c["steps"]} for c in cases], f)
-        proc = subprocess.run(["node", os.path.join(HERE, "polysweep-driver.mjs"), cin, cout],
+            json.dump([payload(c) for c in cases], f)
+        proc = subprocess.run(["node", os.path.join(HERE, driver), cin, cout],
                               capture_output=True, text=True)
         if proc.returncode != 0:
             sys.exit(f"the Node driver failed (exit {proc.returncode}):\n{proc.stderr}")

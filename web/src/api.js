@@ -669,10 +669,14 @@ export function dissolve(featureCollection, key, options) {
   const out = [];
   for (const [value, members] of groups) {
     const { fillRule, skipNonPolygonal } = optionsOf(options);
-    const parts = [];
-    for (const { feature, i } of members) addFeature(feature, `operand 0, feature ${i}`, parts, skipNonPolygonal);
-    const flat = toFlat(parts);
-    const coordinates = toCoordinates(unpack(run(OPERATIONS.union, fillRule, [flat], [flat.labels])));
+    // Each feature an operand of its own, read by the fill rule alone (features that overlap do not cancel).
+    const flats = members.map(({ feature, i }) => {
+      const parts = [];
+      addFeature(feature, `operand 0, feature ${i}`, parts, skipNonPolygonal);
+      return toFlat(parts);
+    });
+    const packed = run(OPERATIONS.union, fillRule, flats, flats.map((flat) => flat.labels));
+    const coordinates = toCoordinates(unpack(packed));
     if (coordinates.length > 0) {
       out.push({ type: 'Feature', properties: key === undefined ? {} : { [name]: value }, geometry: { type: 'MultiPolygon', coordinates } });
     }

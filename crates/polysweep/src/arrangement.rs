@@ -192,13 +192,19 @@ impl Arrangement {
         [over, under]
     }
 
-    /// For each fragment, the sets of items on the left of its two half-edges (as ids into the returned sets),
-    /// where the region above a fragment holds the items of the region above the fragment below it, with
-    /// `items_of(segment)` (each the boundary of one item's region, crossed once) taken away or added. The region
-    /// below everything holds none.
-    pub fn item_sets(&self, items_of: impl Fn(u32) -> u32) -> (Vec<[u32; 2]>, Vec<Vec<u32>>) {
-        let mut sets: Vec<Vec<u32>> = vec![Vec::new()];
-        let mut ids: HashMap<Vec<u32>, u32> = HashMap::from([(Vec::new(), 0)]);
+    /// For each fragment, the sets of items inside on the left of its two half-edges (as ids into the returned
+    /// sets). Each input segment is part of one item's boundary: `item_of(segment)` gives the item and its winding
+    /// (+1 when crossing the segment upwards, or leftwards when vertical, enters the item's ring). The region above
+    /// a fragment has the winding numbers of the region above the fragment below it plus those of the fragment's
+    /// segments, and the region below everything none; an item is inside where `inside` says its winding number is.
+    pub fn item_sets(
+        &self,
+        item_of: impl Fn(u32) -> (u32, i32),
+        inside: impl Fn(i32) -> bool,
+    ) -> (Vec<[u32; 2]>, Vec<Vec<u32>>) {
+        // The winding numbers of a region, as (item, number) for the numbers that are not 0, sorted; interned.
+        let mut windings: Vec<Vec<(u32, i32)>> = vec![Vec::new()];
+        let mut winding_ids: HashMap<Vec<(u32, i32)>, u32> = HashMap::from([(Vec::new(), 0)]);
         let mut sides = vec![[NONE; 2]; self.fragments.len()];
         let mut chain = Vec::new();
         for start in 0..self.fragments.len() as u32 {
@@ -209,30 +215,48 @@ impl Arrangement {
                 f = self.fragments[f as usize].below;
             }
             while let Some(f) = chain.pop() {
-                let fragment = &self.fragments[f as usize];
-                // The region just above the fragment below (for a vertical one, on its right).
-                let under = match fragment.below {
+                // The region just above the fragment below (never vertical, see `Fragment::below`).
+                let under = match self.fragments[f as usize].below {
                     NONE => 0,
-                    b if self.is_vertical(b) => sides[b as usize][1],
                     b => sides[b as usize][0],
                 };
-                let mut set = sets[under as usize].clone();
+                let mut numbers = windings[under as usize].clone();
                 for s in self.segments(f) {
-                    let item = items_of(s);
-                    match set.binary_search(&item) {
-                        Ok(i) => {
-                            set.remove(i);
+                    let (item, winding) = item_of(s);
+                    match numbers.binary_search_by_key(&item, |&(i, _)| i) {
+                        Ok(i) if numbers[i].1 + winding == 0 => {
+                            numbers.remove(i);
                         }
-                        Err(i) => set.insert(i, item),
+                        Ok(i) => numbers[i].1 += winding,
+                        Err(i) => numbers.insert(i, (item, winding)),
                     }
                 }
-                let over = *ids.entry(set).or_insert_with_key(|set| {
-                    sets.push(set.clone());
-                    (sets.len() - 1) as u32
+                let over = *winding_ids.entry(numbers).or_insert_with_key(|numbers| {
+                    windings.push(numbers.clone());
+                    (windings.len() - 1) as u32
                 });
                 sides[f as usize] = [over, under];
             }
         }
+        // The items inside, for each set of winding numbers, interned again: regions whose numbers differ can hold the
+        // same items.
+        let mut sets: Vec<Vec<u32>> = Vec::new();
+        let mut set_ids: HashMap<Vec<u32>, u32> = HashMap::new();
+        let set_of: Vec<u32> = (windings.iter())
+            .map(|numbers| {
+                let set: Vec<u32> = (numbers.iter())
+                    .filter(|&&(_, w)| inside(w))
+                    .map(|&(item, _)| item)
+                    .collect();
+                *set_ids.entry(set).or_insert_with_key(|set| {
+                    sets.push(set.clone());
+                    (sets.len() - 1) as u32
+                })
+            })
+            .collect();
+        let sides = (sides.iter())
+            .map(|side| side.map(|w| set_of[w as usize]))
+            .collect();
         (sides, sets)
     }
 

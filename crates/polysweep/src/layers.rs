@@ -1,12 +1,13 @@
 //! Overlaying two layers of features, each output face knowing the features that cover it; and dissolving features
 //! by a key (not in the paper, whose §1 names such overlays as its purpose: sea ice, biomes, watersheds).
 //!
-//! Each feature is first made a valid polygon set by a sweep of its own (as [`crate::overlay_all`] does its
-//! operands), so that its boundary, crossed anywhere, takes it away or adds it. Then one sweep of the arrangement of
-//! both layers ([`crate::arrangement`]) knows, above every fragment, the set of features there: the set above the
-//! fragment below, with the features whose boundary the fragment lies on taken away or added. A face's set is the
-//! set on the left of its half-edges, and faces of one set that share an edge are one polygon. The cost is a sweep
-//! of each feature, one of both layers together, and the output: not one operation per pair of features.
+//! One sweep of the arrangement of both layers ([`crate::arrangement`]) knows, above every fragment, each feature's
+//! winding number there: the numbers above the fragment below, plus the windings of the feature rings the fragment
+//! lies on. The features there are those whose number the fill rule reads as inside (each feature on its own: the
+//! features of one layer that overlap do not cancel). A face's set of features is the set on the left of its
+//! half-edges, and faces of one set that share an edge are one polygon. The cost is one sweep of both layers and
+//! the output, not one operation per pair of features. (Under the structural reading a feature that is not a valid
+//! polygon set is first made one by sweeps of its own, as the Boolean operations read their operands.)
 
 use crate::arrangement::Arrangement;
 use crate::edges::NONE;
@@ -15,9 +16,7 @@ use crate::geometry::MultiPolygon;
 use crate::input::{self, Bounds};
 use crate::lines::readable;
 use crate::options::Options;
-use crate::overlay::sweep;
-use crate::select::{Operation, Selection};
-use crate::workspace;
+use crate::select::Operation;
 use std::collections::HashMap;
 use std::hash::Hash;
 
@@ -86,37 +85,27 @@ pub fn overlay_layers(
 ) -> Result<Vec<LayerFace>, Error> {
     let boxes = [check_layer(0, a)?, check_layer(1, b)?];
     let magnitude = boxes[0].around(&boxes[1]).magnitude();
-    // Each feature a valid polygon set, its edges in the layer's slot; the item of each segment is its feature,
-    // numbered through both layers.
+    // Each feature's edges in its layer's slot; the item of each segment is its feature, numbered through both
+    // layers, with the segment's winding.
     let mut edges = Vec::new();
     let mut feature_of_segment = Vec::new();
     let features = a.iter().map(|f| (0, f)).chain(b.iter().map(|f| (1, f)));
-    workspace::with(options.shortcuts.keep_working_memory, |workspace| {
-        for (index, (layer, feature)) in features.enumerate() {
-            let (readable, fill_rule) = readable(feature, magnitude, options)?;
-            let mut own = workspace::take(&mut workspace.edges);
-            input::add_edges(&mut own, &readable, 0, |_| true);
-            let normalise = Selection::Pair {
-                operation: Operation::Union,
-                fill_rule,
-            };
-            let options = options.with_fill_rule(fill_rule);
-            let (valid, _) = sweep(
-                own,
-                normalise,
-                f64::INFINITY,
-                magnitude,
-                &options,
-                workspace,
-                None,
-            )?;
-            input::add_edges(&mut edges, &valid, layer, |_| true);
-            feature_of_segment.resize(edges.len(), index as u32);
-        }
-        Ok::<_, Error>(())
-    })?;
+    let mut fill_rule = options.fill_rule;
+    for (index, (layer, feature)) in features.enumerate() {
+        // (The rule is the same for every feature: even-odd for one the structural reading has made valid.)
+        let (readable, rule) = readable(feature, magnitude, options)?;
+        fill_rule = rule;
+        input::add_edges(&mut edges, &readable, layer, |_| true);
+        feature_of_segment.resize(edges.len(), index as u32);
+    }
     let arrangement = Arrangement::sweep(edges, magnitude, options)?;
-    let (sides, sets) = arrangement.item_sets(|s| feature_of_segment[s as usize]);
+    let (sides, sets) = arrangement.item_sets(
+        |s| {
+            let winding = arrangement.input[s as usize].winding;
+            (feature_of_segment[s as usize], winding)
+        },
+        |winding| fill_rule.is_inside(winding),
+    );
     let in_a = a.len() as u32;
     let kept: Vec<bool> = (sets.iter())
         .map(|set| {
