@@ -217,7 +217,7 @@ fn bad_input_is_an_error_that_names_the_line_or_feature() {
     let far = multipolygon(&serde_json::json!([[[[0, 0], [1, 0], [1, 1e300]]]]));
     let layer = [square.clone(), square.clone(), far];
     let error = overlay_layers(
-        &[square.clone()],
+        std::slice::from_ref(&square),
         &layer,
         LayerMode::Union,
         &Options::default(),
@@ -264,7 +264,12 @@ fn a_closed_line_is_not_cut_where_it_closes() {
     let square = multipolygon(&serde_json::json!([[[[0, 0], [4, 0], [4, 4], [0, 4]]]]));
     let points = |p: &[[f64; 2]]| -> LineString { p.iter().map(|&q| Point::from(q)).collect() };
     let ring = points(&[[2.0, 2.0], [6.0, 2.0], [6.0, 6.0], [2.0, 6.0], [2.0, 2.0]]);
-    let inside = clip(&[ring.clone()], &square, &ClipOptions::default()).unwrap();
+    let inside = clip(
+        std::slice::from_ref(&ring),
+        &square,
+        &ClipOptions::default(),
+    )
+    .unwrap();
     assert_eq!(
         inside,
         vec![vec![points(&[[2.0, 4.0], [2.0, 2.0], [4.0, 2.0]])]]
