@@ -665,10 +665,10 @@ export function dissolve(featureCollection, key, options) {
     if (!groups.has(value)) groups.set(value, []);
     groups.get(value).push({ feature, i });
   });
+  const { fillRule, skipNonPolygonal } = optionsOf(options);
   const name = typeof key === 'string' ? key : 'key';
   const out = [];
   for (const [value, members] of groups) {
-    const { fillRule, skipNonPolygonal } = optionsOf(options);
     // Each feature an operand of its own, read by the fill rule alone (features that overlap do not cancel).
     const flats = members.map(({ feature, i }) => {
       const parts = [];

@@ -158,27 +158,26 @@ fn check_layer(index: usize, features: &[MultiPolygon]) -> Result<Bounds, Error>
     Ok(Bounds::around_all(&boxes))
 }
 
-/// `features` merged by key: for each distinct key, in the order keys first appear, the union of the features with
-/// that key (so features of one key that share an edge or overlap become one polygon). Errors name a feature as
+/// `features`, each with its key, merged by key: for each distinct key, in the order keys first appear, the union of
+/// the features with that key (so features of one key that share an edge or overlap become one polygon). Errors name a feature as
 /// the operand.
 ///
 /// ```
 /// use polysweep::{dissolve, MultiPolygon, Options};
 /// let square = |x: f64| MultiPolygon::from_coordinates(&[vec![vec![[x, 0.0], [x + 1.0, 0.0], [x + 1.0, 1.0], [x, 1.0]]]]);
-/// let merged = dissolve(&[square(0.0), square(1.0), square(2.0)], &["park", "park", "lake"], &Options::default())?;
+/// let features = [("park", square(0.0)), ("park", square(1.0)), ("lake", square(2.0))];
+/// let merged = dissolve(&features, &Options::default())?;
 /// assert_eq!(merged.len(), 2);
 /// assert_eq!((merged[0].0, merged[0].1.0.len(), merged[0].1.area()), ("park", 1, 2.0));
 /// # Ok::<(), polysweep::Error>(())
 /// ```
 pub fn dissolve<K: Eq + Hash + Clone>(
-    features: &[MultiPolygon],
-    keys: &[K],
+    features: &[(K, MultiPolygon)],
     options: &Options,
 ) -> Result<Vec<(K, MultiPolygon)>, Error> {
-    assert_eq!(features.len(), keys.len(), "one key per feature");
     let mut groups: Vec<(K, Vec<usize>)> = Vec::new();
     let mut group_of: HashMap<&K, usize> = HashMap::new();
-    for (i, key) in keys.iter().enumerate() {
+    for (i, (key, _)) in features.iter().enumerate() {
         let g = *group_of.entry(key).or_insert_with(|| {
             groups.push((key.clone(), Vec::new()));
             groups.len() - 1
@@ -187,7 +186,7 @@ pub fn dissolve<K: Eq + Hash + Clone>(
     }
     let mut merged = Vec::with_capacity(groups.len());
     for (key, members) in groups {
-        let operands: Vec<&MultiPolygon> = members.iter().map(|&i| &features[i]).collect();
+        let operands: Vec<&MultiPolygon> = members.iter().map(|&i| &features[i].1).collect();
         let union =
             crate::overlay::overlay_many(Operation::Union, &operands, options).map_err(|e| {
                 e.relocated(|at| Location {

@@ -162,15 +162,10 @@ fn dissolve_fixtures() {
         let name = case["name"].as_str().unwrap();
         let options = Options::default().with_fill_rule(fill_rule(&case));
         let features = case["features"].as_array().unwrap();
-        let keys: Vec<&str> = features
-            .iter()
-            .map(|f| f["key"].as_str().unwrap())
+        let keyed: Vec<(&str, MultiPolygon)> = (features.iter())
+            .map(|f| (f["key"].as_str().unwrap(), multipolygon(&f["polygon"])))
             .collect();
-        let shapes: Vec<MultiPolygon> = features
-            .iter()
-            .map(|f| multipolygon(&f["polygon"]))
-            .collect();
-        let mut groups = dissolve(&shapes, &keys, &options).unwrap();
+        let mut groups = dissolve(&keyed, &options).unwrap();
         groups.sort_by_key(|g| g.0);
         let expected = case["expected"]["groups"].as_array().unwrap();
         assert_eq!(groups.len(), expected.len(), "{name}");
@@ -236,12 +231,8 @@ fn bad_input_is_an_error_that_names_the_line_or_feature() {
     let nan = multipolygon(&serde_json::json!([[[[0, 0], [1, 0], [1, 1]]]]));
     let mut with_nan = nan.clone();
     with_nan.0[0].exterior[1].y = f64::NAN;
-    let error = dissolve(
-        &[nan, square.clone(), with_nan],
-        &["a", "b", "a"],
-        &Options::default(),
-    )
-    .unwrap_err();
+    let keyed = [("a", nan), ("b", square.clone()), ("a", with_nan)];
+    let error = dissolve(&keyed, &Options::default()).unwrap_err();
     assert_eq!(
         at(error),
         Location {
