@@ -192,3 +192,20 @@ export function dissolve<P>(
   key?: string | ((feature: Feature<any, P>, index: number) => unknown),
   options?: Options,
 ): FeatureCollection<MultiPolygon, Record<string, unknown>>;
+
+export interface ClipLayerOptions extends Options {
+  /** Called with the count of features done and their total (those whose bounding box meets the polygon's). */
+  onProgress?: (done: number, total: number) => void;
+}
+
+/**
+ * Each feature of `layer` clipped to `polygon` (QGIS's Clip): one MultiPolygon feature per feature that meets the
+ * polygon's interior, in the layer's order, keeping its id and properties.
+ */
+export function clipLayer<P>(layer: Layer<P>, polygon: Operand, options?: ClipLayerOptions): FeatureCollection<MultiPolygon, P>;
+
+/**
+ * Polygons in longitude/latitude that cross the antimeridian (an edge from 179° to -179°, say) cut there into
+ * pieces within [-180, 180], in the kind of `geom`; a ring that goes round a pole is closed over it.
+ */
+export function splitAntimeridian<G extends Operand>(geom: G, options?: Options): Result<G>;

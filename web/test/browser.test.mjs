@@ -98,13 +98,35 @@ test('plain ES module: every fixture in Chromium', { timeout: TIMEOUT }, async (
   }
 });
 
-test('module Web Worker: union of two overlapping squares', { timeout: TIMEOUT }, async () => {
+test('polysweep/worker: jobs in a module worker, errors, transfer, progress and abort', { timeout: TIMEOUT }, async () => {
   const outcome = await runPage(`${origin}/web/test/browser/worker.html`);
   assertClean(outcome);
-  const result = outcome.results.union;
-  assert.equal(result.length, 1, 'one polygon');
-  assert.equal(result[0].length, 1, 'without holes');
-  assert.equal(area(result), 7);
+  const r = outcome.results;
+  assert.equal(area(r.union), 7);
+  assert.deepEqual(r.error, { error: r.syncError }, 'the worker rejects with the error the sync call throws');
+  assert.equal(r.syncError.name, 'TypeError');
+  assert.equal(r.coordinateError.error.name, 'RangeError');
+  assert.match(r.coordinateError.error.message, /^polygon, polygon 0, ring 0, vertex 1: /);
+  assert.equal(r.functionOption.error.name, 'TypeError');
+  assert.match(r.functionOption.error.message, /options\.properties is a function/);
+  // The intersection of [0, 2]² and [1, 3]²: the unit square [1, 2]², from the transferred arrays.
+  assert.equal(r.flat.callerCoordsLeft, 0, 'the caller\'s arrays were transferred');
+  assert.deepEqual(r.flat.polygonOffsets, [0, 1]);
+  const ring = r.flat.coords.reduce((positions, c, i) => (i % 2 ? positions.at(-1).push(c) : positions.push([c]), positions), []);
+  assert.equal(area([[ring]]), 1);
+  // [10.5, 40.5]² over the unit cells of a 60 × 60 grid: 31 × 31 cells meet it; its area 900 is theirs.
+  const { features, progress } = r.clipLayer;
+  assert.equal(features.length, 31 * 31);
+  assert.ok(Math.abs(features.reduce((sum, f) => sum + area(f.geometry.coordinates), 0) - 900) < 1e-9);
+  const corner = features.find((f) => f.id === 'cell-610');
+  assert.deepEqual(corner.properties, { row: 10, column: 10 });
+  assert.equal(area(corner.geometry.coordinates), 0.25, 'the corner cell keeps a quarter');
+  assert.deepEqual(progress[0], [0, 31 * 31]);
+  assert.deepEqual(progress.at(-1), [31 * 31, 31 * 31]);
+  assert.ok(progress.every(([done], i) => i === 0 || done > progress[i - 1][0]), 'progress only grows');
+  for (const aborted of [r.abortedRunning, r.abortedQueued, r.preAborted]) assert.equal(aborted.error?.name, 'AbortError');
+  assert.equal(area(r.afterAbort), 1, 'the worker runs jobs again after an abort');
+  assert.equal(area(r.afterTerminate), 6);
 });
 
 test('bundled by Vite: every fixture in Chromium', { timeout: TIMEOUT }, async (t) => {

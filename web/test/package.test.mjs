@@ -46,7 +46,12 @@ const PAGE_TIMEOUT = 60_000;
 /** Exactly what the tarball holds: the entries, the API, the glue, the wasm, the declarations, the README. */
 const TARBALL_FILES = [
   'README.md',
+  'antimeridian.js',
   'api.js',
+  'geojson.js',
+  'layer-clip.js',
+  'layers.js',
+  'lines.js',
   'package.json',
   'polysweep.cjs',
   'polysweep.d.cts',
@@ -55,9 +60,12 @@ const TARBALL_FILES = [
   'polysweep.node.js',
   'polysweep_wasm.js',
   'polysweep_wasm_bg.wasm',
+  'worker-script.js',
+  'worker.d.ts',
+  'worker.js',
 ].sort();
 /** Names every entry exports (among any others the API gains: the entries must agree on those too). */
-const API = ['clip', 'difference', 'dissolve', 'intersection', 'overlayFlat', 'overlayLayers', 'split', 'union', 'xor'];
+const API = ['clip', 'clipLayer', 'difference', 'dissolve', 'intersection', 'overlayFlat', 'overlayLayers', 'split', 'splitAntimeridian', 'union', 'xor'];
 const assertApi = (names, what) => {
   for (const name of API) assert.ok(names.includes(name), `${what} exports ${name}: ${names.join(', ')}`);
 };
@@ -320,8 +328,8 @@ test('the tarball holds exactly the package’s files, and what package.json nam
   };
   t.diagnostic(`tarball ${packed.filename}: ${kB(packed.size)} (${kB(packed.unpackedSize)} unpacked), ${files.length} files`);
   t.diagnostic(`wasm (polysweep_wasm_bg.wasm): ${sizes(['polysweep_wasm_bg.wasm'])}`);
-  const esm = ['polysweep.js', 'api.js', 'polysweep_wasm.js'];
-  t.diagnostic(`JS of the ES module entries (polysweep.js or .node.js, api.js, polysweep_wasm.js): ${sizes(esm)}`);
+  const esm = ['polysweep.js', 'api.js', 'geojson.js', 'lines.js', 'layers.js', 'layer-clip.js', 'antimeridian.js', 'polysweep_wasm.js'];
+  t.diagnostic(`JS of the ES module entries (polysweep.js or .node.js, the API's modules, polysweep_wasm.js): ${sizes(esm)}`);
   t.diagnostic(`JS of the CommonJS entry (polysweep.cjs): ${sizes(['polysweep.cjs'])}`);
 });
 

@@ -155,3 +155,23 @@ exactly<FeatureCollection<MultiPolygon, { parcel: string; zone: number }>, typeo
 overlayLayers(lots, zones, { mode: 'cut' });
 dissolve(lots, 'parcel');
 dissolve(lots, (f) => f.properties.parcel.slice(0, 1));
+
+// ---- Map editing: clipLayer, splitAntimeridian and the worker ----
+import { clipLayer, splitAntimeridian } from 'polysweep';
+import { createWorker } from 'polysweep/worker';
+
+const clipped = clipLayer(lots, polygon, { onProgress: (done, total) => done / total });
+exactly<FeatureCollection<MultiPolygon, Lot>, typeof clipped>(true);
+exactly<Feature<MultiPolygon, Lot>, ReturnType<typeof splitAntimeridian<Feature<Polygon, Lot>>>>(true);
+const ps = createWorker();
+async function inWorker(signal: AbortSignal) {
+  const layer = await ps.clipLayer(lots, polygon, { signal, onProgress: () => {} });
+  exactly<FeatureCollection<MultiPolygon, Lot>, typeof layer>(true);
+  const merged = await ps.union(polygon, multiPolygon, { signal });
+  const flat = await ps.overlayFlat('xor', [], { signal });
+  exactly<FlatMultiPolygon, typeof flat>(true);
+  // @ts-expect-error: the worker's promise, not a result
+  const notAwaited: MultiPolygon = ps.union(polygon, polygon);
+  return [merged, notAwaited];
+}
+void inWorker;
