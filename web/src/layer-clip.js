@@ -1,8 +1,9 @@
 // clipLayer in three steps, apart so that the middle one can run in a Web Worker (worker.js):
 // - prepare, on the caller's thread: the layer's features and the clipping polygon read into the flat form (typed
-//   arrays, which a worker takes without copying), leaving out the features whose bounding box misses the polygon's;
-// - compute, where the wasm core is: the features clipped in batches, one layer overlay (one sweep) per batch, so
-//   that a big polygon is swept once per batch rather than once per feature, with progress after each batch;
+//   arrays, which a worker takes without copying);
+// - compute, where the wasm core is: the features whose bounding box misses the polygon's left out, the others
+//   clipped in batches, one layer overlay (one sweep) per batch, so that a big polygon is swept once per batch
+//   rather than once per feature, with progress after each batch;
 // - finish, on the caller's thread: a feature per clipped input feature, with its id and properties.
 
 import { overlay_layers_flat } from './polysweep_wasm.js';
@@ -41,9 +42,9 @@ function mayMeet(a, b) {
 
 /**
  * Reads `layer` (a FeatureCollection or an array of Features) and `polygon` (any operand of the Boolean operations).
- * Returns the layer's `features` and the `job` for computeClipLayer: the features that may meet the polygon
- * (`ids`, their indices in the layer) in the flat form with `featureOffsets` (each feature's first polygon), and
- * the polygon.
+ * Returns the layer's `features` and the `job` for computeClipLayer: all features in one flat form, with
+ * `featureOffsets` (each feature's first polygon), and the polygon. One pass, one set of arrays: on the main
+ * thread, this is what a big layer costs before the worker takes over.
  */
 export function prepareClipLayer(layer, polygon, options) {
   const { fillRule, skipNonPolygonal } = optionsOf(options);
@@ -52,28 +53,63 @@ export function prepareClipLayer(layer, polygon, options) {
   const clipInput = readOperand(polygon, 0, skipNonPolygonal);
   for (const part of clipInput.parts) part.where = part.where.replace(/^operand 0/, 'polygon');
   const clip = toFlat(clipInput.parts);
-  const box = bounds(clip.coords);
-  const ids = [];
-  const flats = [];
-  features.forEach((feature, i) => {
+  const parts = [];
+  const featureOffsets = new Uint32Array(features.length + 1);
+  let polygons = 0;
+  for (let i = 0; i < features.length; i++) {
+    const feature = features[i];
     const where = `layer, feature ${i}`;
     if (feature?.type !== 'Feature') throw new TypeError(`${where}: expected a Feature, not ${describeGeoJSON(feature)}`);
-    const parts = [];
+    const first = parts.length;
     addFeature(feature, where, parts, skipNonPolygonal);
-    const flat = toFlat(parts);
-    if (flat.coords.length > 0 && mayMeet(bounds(flat.coords), box)) {
-      ids.push(i);
-      flats.push(flat);
-    }
-  });
-  const flat = concatenate(flats);
+    for (let k = first; k < parts.length; k++) polygons += parts[k].coordinates.length;
+    featureOffsets[i + 1] = polygons;
+  }
+  const flat = toFlat(parts);
   const job = {
     fillRule,
-    ids: Uint32Array.from(ids),
-    layer: { coords: flat.coords, ringOffsets: flat.ringOffsets, polygonOffsets: flat.polygonOffsets, featureOffsets: flat.operandOffsets },
+    layer: { coords: flat.coords, ringOffsets: flat.ringOffsets, polygonOffsets: flat.polygonOffsets, featureOffsets },
     clip: { coords: clip.coords, ringOffsets: clip.ringOffsets, polygonOffsets: clip.polygonOffsets, labels: clip.labels },
   };
   return { features, job };
+}
+
+/**
+ * The features of `layer` whose bounding box may meet `box`: `ids`, their indices, and `layer`, them alone in the
+ * flat form with their `featureOffsets`.
+ */
+function featuresMeeting({ coords, ringOffsets, polygonOffsets, featureOffsets }, box) {
+  const vertexOf = (f) => ringOffsets[polygonOffsets[featureOffsets[f]]];
+  const ids = [];
+  let vertices = 0;
+  let rings = 0;
+  for (let f = 0; f + 1 < featureOffsets.length; f++) {
+    const [v0, v1] = [vertexOf(f), vertexOf(f + 1)];
+    if (v1 > v0 && mayMeet(bounds(coords.subarray(2 * v0, 2 * v1)), box)) {
+      ids.push(f);
+      vertices += v1 - v0;
+      rings += polygonOffsets[featureOffsets[f + 1]] - polygonOffsets[featureOffsets[f]];
+    }
+  }
+  const polygons = ids.reduce((sum, f) => sum + featureOffsets[f + 1] - featureOffsets[f], 0);
+  const out = {
+    coords: new Float64Array(2 * vertices),
+    ringOffsets: new Uint32Array(rings + 1),
+    polygonOffsets: new Uint32Array(polygons + 1),
+    featureOffsets: new Uint32Array(ids.length + 1),
+  };
+  let [v, r, p] = [0, 0, 0];
+  ids.forEach((f, k) => {
+    const [p0, p1] = [featureOffsets[f], featureOffsets[f + 1]];
+    const [r0, r1] = [polygonOffsets[p0], polygonOffsets[p1]];
+    const v0 = ringOffsets[r0];
+    out.coords.set(coords.subarray(2 * v0, 2 * ringOffsets[r1]), 2 * v);
+    for (let i = p0 + 1; i <= p1; i++) out.polygonOffsets[++p] = r + polygonOffsets[i] - r0;
+    for (let i = r0 + 1; i <= r1; i++) out.ringOffsets[++r] = v + ringOffsets[i] - v0;
+    v += ringOffsets[r1] - v0;
+    out.featureOffsets[k + 1] = p;
+  });
+  return { ids: Uint32Array.from(ids), layer: out };
 }
 
 /** The typed arrays' buffers of a flat form (or several), to transfer to or from a worker. */
@@ -155,9 +191,12 @@ function relabel(message, ids, start, featureOffsets, clipLabels) {
  * `featureOffsets` (each one's first polygon).
  */
 export function computeClipLayer(job, onProgress) {
-  const { ids, layer, clip, fillRule } = job;
-  // A polygon with a coordinate that is not finite meets every box: the core names its vertex.
-  if (clip.coords.length > 0 && Number.isNaN(bounds(clip.coords)[0])) run(OPERATIONS.union, fillRule, [clip], [clip.labels]);
+  const { clip, fillRule } = job;
+  const box = bounds(clip.coords);
+  // A polygon with a coordinate that is not finite: the core names its vertex.
+  if (Number.isNaN(box[0])) run(OPERATIONS.union, fillRule, [clip], [clip.labels]);
+  const { ids, layer } = featuresMeeting(job.layer, box);
+  const meeting = { fillRule, ids, layer, clip };
   const total = ids.length;
   const results = new Array(total);
   const vertexOfFeature = (f) => layer.ringOffsets[layer.polygonOffsets[layer.featureOffsets[f]]];
@@ -165,7 +204,7 @@ export function computeClipLayer(job, onProgress) {
   for (let start = 0; start < total; ) {
     let end = start + 1;
     while (end < total && end - start < BATCH_FEATURES && vertexOfFeature(end + 1) - vertexOfFeature(start) <= BATCH_VERTICES) end++;
-    clipBatch(job, start, end, results);
+    clipBatch(meeting, start, end, results);
     start = end;
     onProgress?.(start, total);
   }

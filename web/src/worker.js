@@ -115,7 +115,7 @@ export function createWorker({ spawn } = {}) {
       const { signal, onProgress } = takeControls('clipLayer', [layer, polygon, options ?? {}]);
       if (signal?.aborted) throw abortError();
       const { features, job } = prepareClipLayer(layer, polygon, options);
-      const transfer = buffersOf(job.layer, job.clip, { ids: job.ids });
+      const transfer = buffersOf(job.layer, job.clip);
       return finishClipLayer(features, await submit('clipLayer', [job], { signal, onProgress, transfer }));
     },
     /** Stops the worker; jobs not finished are rejected with an AbortError. */
