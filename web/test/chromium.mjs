@@ -6,13 +6,23 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
 
-/** Starts the browser. `close()` shuts it down and removes its profile. */
-export async function launchChromium() {
+/**
+ * Chromium's flags for WebGPU on SwiftShader (its CPU Vulkan), the adapter a machine without a GPU has. Without the
+ * Vulkan and ANGLE ones, headless Chromium renders WebGPU canvases but never composites them: screenshots show
+ * the page behind.
+ */
+const WEBGPU = ['--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-vulkan=swiftshader', '--use-angle=swiftshader', '--use-webgpu-adapter=swiftshader'];
+
+/**
+ * Starts the browser; with `{ webgpu: true }` with WebGPU (otherwise pages get WebGL2 only). `close()` shuts it
+ * down and removes its profile.
+ */
+export async function launchChromium({ webgpu = false } = {}) {
   const profile = mkdtempSync(path.join(tmpdir(), 'polysweep-chromium-'));
   const context = await chromium.launchPersistentContext(profile, {
     executablePath: '/usr/bin/chromium',
     headless: true,
-    args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update', '--no-first-run', '--disable-sync', '--disable-quic'],
+    args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update', '--no-first-run', '--disable-sync', '--disable-quic', ...(webgpu ? WEBGPU : [])],
   });
   const close = async () => {
     await context.close();

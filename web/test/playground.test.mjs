@@ -3,6 +3,7 @@
 // filled with the result colour exactly where that operation's result is and nowhere else; a vertex drag and undo
 // update it; pasted GeoJSON loads, and a bad coordinate shows an error without breaking the app; a line drawn with
 // the line tool splits the result into pieces of distinct colours and shows its part inside, and undo removes it.
+// All of it twice: on WebGL2 and on WebGPU, each checked to be the renderer the app chose.
 //
 // Expectations are independent of the app: which of four probe points lies in each result follows from the two
 // squares by hand. The probes sit mid-region, away from edges, so antialiasing cannot touch them.
@@ -50,18 +51,14 @@ const OPERATIONS = [
 
 let server;
 let origin;
-let context;
-let closeChromium;
 
 before(async () => {
   const glue = path.join(repositoryRoot, 'target', 'playground', 'polysweep_playground.js');
   assert.ok(existsSync(glue), 'the playground is not built: run web/build-playground.sh');
   ({ server, origin } = await serve());
-  ({ context, close: closeChromium } = await launchChromium());
 });
 
 after(async () => {
-  await closeChromium?.();
   await stopServer(server);
 });
 
@@ -109,7 +106,14 @@ async function expectFill(page, filled, label, view = screen) {
   assert.fail(`${label}: expected the result colour at ${JSON.stringify(filled)} only; pixels were ${JSON.stringify(seen)}`);
 }
 
-test('the playground draws two squares with the mouse and fills each operation correctly', { timeout: 180_000 }, async () => {
+// The same steps on each of the browser's paths: WebGPU where the browser offers it (real browsers take it first),
+// WebGL2 otherwise. Both run on SwiftShader here, the CPU renderer of a machine without a GPU.
+for (const renderer of ['WebGL2', 'WebGPU']) {
+  test(`${renderer}: the playground draws two squares with the mouse and fills each operation correctly`, { timeout: 180_000 }, () => drawAndCheck(renderer));
+}
+
+async function drawAndCheck(renderer) {
+  const { context, close } = await launchChromium({ webgpu: renderer === 'WebGPU' });
   const page = await context.newPage();
   await page.setViewportSize(VIEWPORT);
   const problems = [];
@@ -124,6 +128,7 @@ test('the playground draws two squares with the mouse and fills each operation c
     await page.goto(`${origin}/index.html`);
     await page.waitForFunction(() => window.playgroundReady || window.playgroundFailure, null, { timeout: 120_000 });
     assert.equal(await page.evaluate(() => window.playgroundFailure), undefined);
+    assert.equal(await page.evaluate(() => window.playgroundRenderer), renderer);
     assert.ok(await page.isHidden('#status'), 'the loading message is gone');
     await page.waitForTimeout(500);
     await expectFill(page, [], 'before drawing');
@@ -216,5 +221,6 @@ test('the playground draws two squares with the mouse and fills each operation c
     assert.deepEqual(problems, [], `the page reported errors:\n${problems.join('\n')}`);
   } finally {
     await page.close();
+    await close();
   }
-});
+}

@@ -1,5 +1,6 @@
 //! CPU time of playground frames on the paper's Table 1 data (land, 59,212 vertices, × 8 squares), without a GPU:
-//! the app's frame plus egui's tessellation, as the renderer would receive it. Prints medians in milliseconds.
+//! the app's frame plus egui's tessellation, as the renderer would receive it (the fills are not in it: the GPU
+//! pipeline of gpu.rs uploads them once and only moves them per frame). Prints medians in milliseconds.
 //!
 //! ```text
 //! cargo run --release -p polysweep-playground --example frame_time

@@ -20,6 +20,7 @@ use crate::scene::{Operand, Scene};
 use crate::view::View;
 use derived::Derived;
 use eframe::egui::{self, Color32};
+use eframe::egui_wgpu::wgpu;
 use input::Drag;
 use polysweep::{geojson, FillRule, Point};
 
@@ -84,6 +85,8 @@ pub struct Playground {
     /// The last thing that happened that the user should know of (loads, saves, errors).
     status: Option<(String, bool)>,
     paste_text: Option<String>,
+    /// The graphics API wgpu draws with ("WebGPU", "WebGL2", "Vulkan"…), once eframe has chosen it.
+    pub renderer: Option<&'static str>,
     #[cfg(not(target_arch = "wasm32"))]
     path: String,
 }
@@ -105,6 +108,7 @@ impl Default for Playground {
             files: Files::default(),
             status: None,
             paste_text: None,
+            renderer: None,
             #[cfg(not(target_arch = "wasm32"))]
             path: String::new(),
         };
@@ -120,13 +124,32 @@ impl eframe::App for Playground {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.show(ui);
     }
+
+    /// Lets the page ask the running app for its renderer (lib.rs, `WebHandle::renderer`).
+    #[cfg(target_arch = "wasm32")]
+    fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
+        Some(&mut *self)
+    }
 }
 
 impl Playground {
     /// The app in eframe, in dark mode to match the canvas.
     pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
         cc.egui_ctx.set_theme(egui::Theme::Dark);
-        Playground::default()
+        let mut playground = Playground::default();
+        if let Some(render_state) = &cc.wgpu_render_state {
+            crate::gpu::FillPipeline::install(render_state);
+            playground.renderer = Some(match render_state.adapter.get_info().backend {
+                wgpu::Backend::BrowserWebGpu => "WebGPU",
+                wgpu::Backend::Gl if cfg!(target_arch = "wasm32") => "WebGL2",
+                wgpu::Backend::Gl => "OpenGL",
+                wgpu::Backend::Vulkan => "Vulkan",
+                wgpu::Backend::Metal => "Metal",
+                wgpu::Backend::Dx12 => "DirectX 12",
+                _ => "wgpu",
+            });
+        }
+        playground
     }
 
     /// Loads a preset as one undoable step and fits the view to it.

@@ -1,17 +1,24 @@
-//! Filling polygons that egui's painter cannot: egui fills only convex paths, so every region is triangulated
-//! (earcut, the algorithm MapLibre and Mapbox fill with) into a mesh.
+//! Filling polygons: every region is triangulated once (earcut, the algorithm MapLibre and Mapbox fill with), and
+//! gpu.rs uploads the triangles once and draws them every frame.
 //!
 //! Earcut needs simple rings with holes inside their shell. Results of polysweep are exactly that by its output
 //! contract; an operand, which may cross itself, is first passed through polysweep (its union with nothing), which
 //! yields the region the fill rule gives it — so the picture shows the operand as the operations read it.
 
 use earcut::Earcut;
-use eframe::egui::{epaint::Vertex, Color32, Mesh, Pos2};
 use polysweep::{MultiPolygon, Point};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Arc;
 
-/// A triangulated region in world coordinates.
+/// A triangulated region in world coordinates. Cloning shares it: the frame's paint callback holds the fills
+/// without copying them.
 #[derive(Clone, Debug, Default)]
-pub struct Fill {
+pub struct Fill(Arc<Triangles>);
+
+#[derive(Debug, Default)]
+struct Triangles {
+    /// Unique to this triangulation (0 for the empty default): the GPU keeps its buffers by it.
+    id: u64,
     points: Vec<Point>,
     triangles: Vec<u32>,
 }
@@ -19,7 +26,11 @@ pub struct Fill {
 impl Fill {
     /// Triangulates a valid polygon set (simple rings, holes inside their shells).
     pub fn of(m: &MultiPolygon) -> Fill {
-        let mut fill = Fill::default();
+        static NEXT_ID: AtomicU64 = AtomicU64::new(1);
+        let mut fill = Triangles {
+            id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
+            ..Triangles::default()
+        };
         let mut earcut = Earcut::new();
         let (mut data, mut holes, mut triangles) =
             (Vec::new(), Vec::<u32>::new(), Vec::<u32>::new());
@@ -39,38 +50,35 @@ impl Fill {
             fill.points
                 .extend(data.iter().map(|&[x, y]| Point::new(x, y)));
         }
-        fill
+        Fill(Arc::new(fill))
+    }
+
+    pub fn id(&self) -> u64 {
+        self.0.id
+    }
+
+    pub fn points(&self) -> &[Point] {
+        &self.0.points
+    }
+
+    /// Indices into `points`, three per triangle.
+    pub fn triangles(&self) -> &[u32] {
+        &self.0.triangles
     }
 
     pub fn triangle_count(&self) -> usize {
-        self.triangles.len() / 3
+        self.0.triangles.len() / 3
     }
 
     /// Total area of the triangles, to check the triangulation against the polygons' own area.
     pub fn area(&self) -> f64 {
-        self.triangles
+        self.triangles()
             .chunks_exact(3)
             .map(|t| {
-                let [a, b, c] = [0, 1, 2].map(|i| self.points[t[i] as usize]);
+                let [a, b, c] = [0, 1, 2].map(|i| self.points()[t[i] as usize]);
                 ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)).abs() / 2.0
             })
             .sum()
-    }
-
-    /// The screen mesh, placing every world point with `to_screen`.
-    pub fn mesh(&self, to_screen: impl Fn(Point) -> Pos2, color: Color32) -> Mesh {
-        let vertices = (self.points.iter())
-            .map(|&p| Vertex {
-                pos: to_screen(p),
-                uv: Pos2::ZERO,
-                color,
-            })
-            .collect();
-        Mesh {
-            vertices,
-            indices: self.triangles.clone(),
-            ..Mesh::default()
-        }
     }
 }
 
@@ -104,21 +112,13 @@ mod tests {
     }
 
     #[test]
-    fn meshes_follow_the_view() {
-        let fill = Fill::of(&MultiPolygon::from_coordinates(&[vec![vec![
-            [0.0, 0.0],
-            [1.0, 0.0],
-            [1.0, 1.0],
-        ]]]));
-        let mesh = fill.mesh(
-            |p| Pos2::new(p.x as f32 * 10.0, -p.y as f32 * 10.0),
-            Color32::RED,
-        );
-        assert_eq!(mesh.indices.len(), 3);
-        assert!(mesh
-            .vertices
-            .iter()
-            .any(|v| v.pos == Pos2::new(10.0, -10.0)));
-        assert!(mesh.is_valid());
+    fn each_triangulation_has_its_own_id() {
+        let triangle =
+            MultiPolygon::from_coordinates(&[vec![vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]]]);
+        let (a, b) = (Fill::of(&triangle), Fill::of(&triangle));
+        assert_ne!(a.id(), b.id());
+        assert_eq!(a.clone().id(), a.id());
+        assert_eq!(Fill::default().id(), 0);
+        assert_eq!(a.triangles(), b.triangles());
     }
 }

@@ -2,11 +2,13 @@
 //! live, on egui over wgpu (WebGPU in the browser where available, WebGL2 otherwise; Vulkan/Metal/DX12/GL natively).
 //!
 //! The editing model ([`scene`]), camera ([`view`]), operations ([`operation`]) and fill ([`fill`]) hold no UI
-//! state and are tested natively; [`app`] is the egui front end; [`io`] is the only part that differs between the
-//! browser and a native window.
+//! state and are tested natively; [`app`] is the egui front end, which draws the fills through its own wgpu
+//! pipeline ([`gpu`], with the WGSL of `fill.wgsl`); [`io`] is the only part that differs between the browser and a
+//! native window.
 
 pub mod app;
 pub mod fill;
+pub mod gpu;
 pub mod io;
 pub mod operation;
 pub mod presets;
@@ -45,6 +47,12 @@ mod web {
                     Box::new(|cc| Ok(Box::new(crate::Playground::new(cc)))),
                 )
                 .await
+        }
+
+        /// The graphics API the playground draws with: "WebGPU" or "WebGL2" (undefined before it has started).
+        pub fn renderer(&self) -> Option<String> {
+            let app = self.runner.app_mut::<crate::Playground>()?;
+            app.renderer.map(str::to_string)
         }
 
         /// The panic message, if the app has crashed (the page shows it instead of a dead canvas).

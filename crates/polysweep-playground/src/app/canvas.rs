@@ -7,6 +7,7 @@ use super::{
     Playground, Tool, BACKGROUND, HANDLE_RADIUS, LINE_INSIDE, LINE_OUTSIDE, OPERAND_EDGE,
     OPERAND_FILL, PIECE_FILLS, RESULT_EDGE, RESULT_FILL,
 };
+use crate::gpu::Fills;
 use crate::scene::{LineVertex, Operand, VertexId};
 use eframe::egui::{self, Color32, Mesh, Pos2, Rect, Sense, Shape, Stroke};
 use polysweep::{Point, Polygon};
@@ -71,25 +72,39 @@ impl Playground {
         if self.snap {
             self.paint_grid(&painter, canvas);
         }
-        for (fill, color) in self.derived.region_fills.iter().zip(OPERAND_FILL) {
-            painter.add(Shape::mesh(fill.mesh(to_screen, color)));
-        }
+        // The fills on the GPU (gpu.rs), in one paint callback, then the outlines over them.
+        let mut layers: Vec<_> = (self.derived.region_fills.iter().cloned())
+            .zip(OPERAND_FILL)
+            .collect();
         let result_edge = Stroke::new(1.0, RESULT_EDGE);
         match (&self.derived.cut, &self.derived.outcome) {
             (Some(Ok(cut)), _) => {
-                let colours = PIECE_FILLS.iter().cycle();
-                for (fill, colour) in self.derived.piece_fills.iter().zip(colours) {
-                    painter.add(Shape::mesh(fill.mesh(to_screen, *colour)));
+                let colours = PIECE_FILLS.iter().copied().cycle();
+                layers.extend(self.derived.piece_fills.iter().cloned().zip(colours));
+                Fills {
+                    layers,
+                    view,
+                    canvas,
                 }
+                .paint(&painter);
                 paint_outline(&painter, canvas, &cut.pieces, to_screen, result_edge);
             }
             (_, Some(Ok(outcome))) => {
-                painter.add(Shape::mesh(
-                    self.derived.result_fill.mesh(to_screen, RESULT_FILL),
-                ));
+                layers.push((self.derived.result_fill.clone(), RESULT_FILL));
+                Fills {
+                    layers,
+                    view,
+                    canvas,
+                }
+                .paint(&painter);
                 paint_outline(&painter, canvas, &outcome.result.0, to_screen, result_edge);
             }
-            _ => {}
+            _ => Fills {
+                layers,
+                view,
+                canvas,
+            }
+            .paint(&painter),
         }
         for which in [Operand::Subject, Operand::Clipping] {
             let operand = self.scene.operand(which);

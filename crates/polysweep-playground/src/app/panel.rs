@@ -219,6 +219,9 @@ impl Playground {
             "last frame",
             format!("{:.1} ms", ui.input(|i| i.unstable_dt) * 1e3),
         ));
+        if let Some(renderer) = self.renderer {
+            rows.push(("renderer", renderer.to_string()));
+        }
         egui::Grid::new("figures")
             .num_columns(2)
             .striped(true)
