@@ -1,14 +1,20 @@
-//! Filling polygons: every region is triangulated once (earcut, the algorithm MapLibre and Mapbox fill with), and
-//! gpu.rs uploads the triangles once and draws them every frame.
+//! What the GPU draws of polygons (gpu.rs), made once per change and uploaded once: fills, every region
+//! triangulated (earcut, the algorithm MapLibre and Mapbox fill with), and outlines, every ring's edges.
 //!
 //! Earcut needs simple rings with holes inside their shell. Results of polysweep are exactly that by its output
 //! contract; an operand, which may cross itself, is first passed through polysweep (its union with nothing), which
 //! yields the region the fill rule gives it — so the picture shows the operand as the operations read it.
 
 use earcut::Earcut;
-use polysweep::{MultiPolygon, Point};
+use polysweep::{MultiPolygon, Point, Polygon};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
+
+/// A new id for a fill or outline: the GPU keeps its buffers by it (0 is the empty default's).
+fn next_id() -> u64 {
+    static NEXT_ID: AtomicU64 = AtomicU64::new(1);
+    NEXT_ID.fetch_add(1, Ordering::Relaxed)
+}
 
 /// A triangulated region in world coordinates. Cloning shares it: the frame's paint callback holds the fills
 /// without copying them.
@@ -17,7 +23,6 @@ pub struct Fill(Arc<Triangles>);
 
 #[derive(Debug, Default)]
 struct Triangles {
-    /// Unique to this triangulation (0 for the empty default): the GPU keeps its buffers by it.
     id: u64,
     points: Vec<Point>,
     triangles: Vec<u32>,
@@ -26,9 +31,8 @@ struct Triangles {
 impl Fill {
     /// Triangulates a valid polygon set (simple rings, holes inside their shells).
     pub fn of(m: &MultiPolygon) -> Fill {
-        static NEXT_ID: AtomicU64 = AtomicU64::new(1);
         let mut fill = Triangles {
-            id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
+            id: next_id(),
             ..Triangles::default()
         };
         let mut earcut = Earcut::new();
@@ -82,6 +86,39 @@ impl Fill {
     }
 }
 
+/// The edges of rings, as segments (start and end points, in world coordinates). Cloning shares them.
+#[derive(Clone, Debug, Default)]
+pub struct Outline(Arc<Segments>);
+
+#[derive(Debug, Default)]
+struct Segments {
+    id: u64,
+    ends: Vec<[Point; 2]>,
+}
+
+impl Outline {
+    /// Every edge of every ring of `polygons`, closing edge included.
+    pub fn of(polygons: &[Polygon]) -> Outline {
+        let ends = (polygons.iter().flat_map(|p| p.rings()))
+            .flat_map(|ring| ring.iter().zip(ring.iter().cycle().skip(1)))
+            .filter(|(a, b)| a != b)
+            .map(|(a, b)| [*a, *b])
+            .collect();
+        Outline(Arc::new(Segments {
+            id: next_id(),
+            ends,
+        }))
+    }
+
+    pub fn id(&self) -> u64 {
+        self.0.id
+    }
+
+    pub fn segments(&self) -> &[[Point; 2]] {
+        &self.0.ends
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -120,5 +157,21 @@ mod tests {
         assert_eq!(a.clone().id(), a.id());
         assert_eq!(Fill::default().id(), 0);
         assert_eq!(a.triangles(), b.triangles());
+    }
+
+    #[test]
+    fn outlines_hold_every_edge_once() {
+        let square = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
+        let holed = MultiPolygon::from_coordinates(&[vec![
+            square.iter().chain(&square[..1]).copied().collect(),
+            vec![[0.5, 0.5], [0.5, 1.0], [1.0, 1.0], [0.5, 0.5]],
+        ]]);
+        let outline = Outline::of(&holed.0);
+        // The square's four edges, closed or not, and the triangular hole's three.
+        assert_eq!(outline.segments().len(), 7);
+        assert!(outline
+            .segments()
+            .contains(&[Point::new(0.0, 2.0), Point::new(0.0, 0.0)]));
+        assert_ne!(outline.id(), Outline::of(&holed.0).id());
     }
 }

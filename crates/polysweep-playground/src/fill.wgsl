@@ -1,19 +1,39 @@
-// The playground's polygon fills (gpu.rs): the triangles of a fill (fill.rs), uploaded once as positions relative
-// to the fill's origin, placed in the canvas's clip space by a uniform, and painted in one premultiplied colour.
+// The playground's polygons (gpu.rs): fills, the triangles of a region, and outlines, a quad per edge of its
+// rings. Both are uploaded once, as positions relative to their origin, placed in the canvas's clip space by a
+// uniform, and painted in one premultiplied colour.
 
 struct Placement {
-    // clip = position * scale + offset: the view (centre and zoom) and the fill's origin, in the canvas's clip space.
+    // clip = position * scale + offset: the view (centre and zoom) and the origin, in the canvas's clip space.
     scale: vec2<f32>,
     offset: vec2<f32>,
-    // Premultiplied alpha, gamma-space channels: egui's Color32, so fills match the UI's colours.
+    // Premultiplied alpha, gamma-space channels: egui's Color32, so the polygons match the UI's colours.
     color: vec4<f32>,
+    // Clip-space units per point (egui's logical pixel) along x and y, and an outline's width in points.
+    pixel: vec2<f32>,
+    width: f32,
 };
 
 @group(0) @binding(0) var<uniform> placement: Placement;
 
 @vertex
-fn vs_main(@location(0) position: vec2<f32>) -> @builtin(position) vec4<f32> {
+fn vs_fill(@location(0) position: vec2<f32>) -> @builtin(position) vec4<f32> {
     return vec4<f32>(position * placement.scale + placement.offset, 0.0, 1.0);
+}
+
+// An edge from `a` to `b` (one instance per edge) as two triangles, `width` points wide whatever the zoom. No
+// joins: at the hairpin turns of coastlines, mitred joins would shoot far out.
+@vertex
+fn vs_outline(@builtin(vertex_index) corner: u32, @location(0) a: vec2<f32>, @location(1) b: vec2<f32>) -> @builtin(position) vec4<f32> {
+    let start = a * placement.scale + placement.offset;
+    let end = b * placement.scale + placement.offset;
+    // The normal in points (clip units are not square), then back to clip units.
+    let along = (end - start) / placement.pixel;
+    let length = max(sqrt(dot(along, along)), 1e-20);
+    let normal = vec2<f32>(-along.y, along.x) / length * (placement.width / 2.0) * placement.pixel;
+    // Corners 0..5: (start, +), (end, +), (end, -), (start, +), (end, -), (start, -).
+    let at_end = corner == 1u || corner == 2u || corner == 4u;
+    let side = select(-1.0, 1.0, corner == 0u || corner == 1u || corner == 3u);
+    return vec4<f32>(select(start, end, at_end) + side * normal, 0.0, 1.0);
 }
 
 // For a framebuffer that stores gamma-space values (WebGL2 and most WebGPU canvases): the colour as it is.

@@ -1,40 +1,46 @@
-//! The polygons' fills on the GPU. egui draws the UI and the outlines; the fills — the operands as their fill rule
-//! reads them, the result and its pieces — go through this pipeline, an egui_wgpu paint callback: each fill's
-//! triangles (fill.rs) are uploaded once, when the fill is made, and every frame only a small uniform per fill
-//! moves them with the view. A frame therefore costs the same whatever the vertex count, where egui's meshes would
-//! transform and upload every vertex every frame.
+//! The polygons on the GPU. egui draws the UI; the polygons — the operands (filled as their fill rule reads them),
+//! the result and its pieces, fills and outlines — go through these two pipelines, in an egui_wgpu paint callback:
+//! each fill's triangles and each outline's edges (fill.rs) are uploaded once, when they are made, and every frame
+//! only a small uniform per layer moves them with the view. A frame therefore costs the same whatever the vertex
+//! count, where egui's meshes would transform and upload every vertex every frame.
+//!
+//! Fills are triangulated once on the CPU rather than drawn from the rings with the stencil method: eframe's render
+//! pass has no stencil buffer (the stencil method would need a texture of its own and a pass to copy it back), and
+//! earcut runs once per change, in a few milliseconds for the 59,212-vertex land.
 //!
 //! The shaders are in fill.wgsl; `tests::shaders_pass_naga` validates them with naga, as wgpu does before it
 //! compiles them, so that a broken shader fails the native tests (CI has no GPU).
 //!
-//! Precision: positions are stored as f32 relative to their fill's centre, and the view's offset is worked out in
-//! f64; deep zooms far from a fill's centre lose the f32 positions' last bits (about 1e-7 of the fill's extent).
+//! Precision: positions are stored as f32 relative to their layer's centre, and the view's offset is worked out in
+//! f64; deep zooms far from a layer's centre lose the f32 positions' last bits (about 1e-7 of the layer's extent).
 
-use crate::fill::Fill;
+use crate::fill::{Fill, Outline};
 use crate::view::View;
-use eframe::egui::{self, Color32, Rect};
+use eframe::egui::{self, Color32, Rect, Stroke};
 use eframe::egui_wgpu::{
     self, wgpu, CallbackResources, CallbackTrait, RenderState, ScreenDescriptor,
 };
 use polysweep::Point;
-use std::collections::HashMap;
+use std::collections::hash_map::{Entry, HashMap};
 use wgpu::util::DeviceExt;
 
-/// The WGSL of the fill pipeline.
+/// The WGSL of both pipelines.
 pub const SHADER: &str = include_str!("fill.wgsl");
 
-/// The GPU side: the pipeline, the uploaded fills by id, and a uniform per fill drawn in the frame.
+/// The GPU side: the pipelines, the uploaded layers by id, and a uniform per layer drawn in the frame.
 pub struct FillPipeline {
-    pipeline: wgpu::RenderPipeline,
+    fill: wgpu::RenderPipeline,
+    outline: wgpu::RenderPipeline,
     placement_layout: wgpu::BindGroupLayout,
     uploaded: HashMap<u64, Uploaded>,
     placements: Vec<Placement>,
 }
 
+/// A layer's buffers: a fill's vertices and triangles' indices, or an outline's edges (two points each).
 struct Uploaded {
     vertices: wgpu::Buffer,
-    indices: wgpu::Buffer,
-    index_count: u32,
+    indices: Option<wgpu::Buffer>,
+    count: u32,
     origin: Point,
 }
 
@@ -43,8 +49,8 @@ struct Placement {
     bind_group: wgpu::BindGroup,
 }
 
-/// Bytes of the `Placement` uniform of fill.wgsl: scale, offset, colour.
-const PLACEMENT_SIZE: u64 = 8 * 4;
+/// Bytes of the `Placement` uniform of fill.wgsl: scale, offset, colour, pixel and width, padded to 16 bytes.
+const PLACEMENT_SIZE: u64 = 12 * 4;
 
 impl FillPipeline {
     /// Creates the pipeline for egui's render target and leaves it in egui's callback resources.
@@ -78,58 +84,75 @@ impl FillPipeline {
         } else {
             "fs_gamma"
         };
-        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("polysweep fill"),
-            layout: Some(&layout),
-            vertex: wgpu::VertexState {
-                module: &module,
-                entry_point: Some("vs_main"),
-                compilation_options: Default::default(),
-                buffers: &[Some(wgpu::VertexBufferLayout {
-                    array_stride: 2 * 4,
-                    step_mode: wgpu::VertexStepMode::Vertex,
-                    attributes: &wgpu::vertex_attr_array![0 => Float32x2],
-                })],
-            },
-            primitive: wgpu::PrimitiveState::default(),
-            // egui's render pass has no depth or stencil buffer and one sample (eframe's defaults).
-            depth_stencil: None,
-            multisample: wgpu::MultisampleState::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &module,
-                entry_point: Some(fragment),
-                compilation_options: Default::default(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format: render_state.target_format,
-                    blend: Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING),
-                    write_mask: wgpu::ColorWrites::ALL,
-                })],
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
+        let pipeline = |vertex: &str, step_mode, attributes: &[wgpu::VertexAttribute]| {
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("polysweep polygons"),
+                layout: Some(&layout),
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some(vertex),
+                    compilation_options: Default::default(),
+                    buffers: &[Some(wgpu::VertexBufferLayout {
+                        array_stride: attributes.len() as u64 * 2 * 4,
+                        step_mode,
+                        attributes,
+                    })],
+                },
+                primitive: wgpu::PrimitiveState::default(),
+                // egui's render pass has no depth or stencil buffer and one sample (eframe's defaults).
+                depth_stencil: None,
+                multisample: wgpu::MultisampleState::default(),
+                fragment: Some(wgpu::FragmentState {
+                    module: &module,
+                    entry_point: Some(fragment),
+                    compilation_options: Default::default(),
+                    targets: &[Some(wgpu::ColorTargetState {
+                        format: render_state.target_format,
+                        blend: Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING),
+                        write_mask: wgpu::ColorWrites::ALL,
+                    })],
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
+        };
+        let fill = pipeline(
+            "vs_fill",
+            wgpu::VertexStepMode::Vertex,
+            &wgpu::vertex_attr_array![0 => Float32x2],
+        );
+        // One instance per edge: its two ends.
+        let outline = pipeline(
+            "vs_outline",
+            wgpu::VertexStepMode::Instance,
+            &wgpu::vertex_attr_array![0 => Float32x2, 1 => Float32x2],
+        );
         render_state
             .renderer
             .write()
             .callback_resources
             .insert(FillPipeline {
-                pipeline,
+                fill,
+                outline,
                 placement_layout,
                 uploaded: HashMap::new(),
                 placements: Vec::new(),
             });
     }
 
-    /// Uploads the fills not on the GPU yet, forgets those no longer drawn, and writes each fill's placement.
-    fn prepare(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, fills: &Fills) {
+    /// Uploads the layers not on the GPU yet, forgets those no longer drawn, and writes each layer's placement.
+    fn prepare(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, polygons: &Polygons) {
+        let layers = &polygons.layers;
         self.uploaded
-            .retain(|id, _| fills.layers.iter().any(|(fill, _)| fill.id() == *id));
-        for (fill, _) in &fills.layers {
-            if fill.triangle_count() > 0 && !self.uploaded.contains_key(&fill.id()) {
-                self.uploaded.insert(fill.id(), upload(device, fill));
+            .retain(|id, _| layers.iter().any(|layer| layer.id() == *id));
+        for layer in layers {
+            if let Entry::Vacant(entry) = self.uploaded.entry(layer.id()) {
+                if let Some(uploaded) = upload(device, layer) {
+                    entry.insert(uploaded);
+                }
             }
         }
-        while self.placements.len() < fills.layers.len() {
+        while self.placements.len() < layers.len() {
             let uniform = device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some("polysweep fill placement"),
                 size: PLACEMENT_SIZE,
@@ -149,13 +172,19 @@ impl FillPipeline {
                 bind_group,
             });
         }
-        for ((fill, color), placement) in fills.layers.iter().zip(&self.placements) {
-            if let Some(uploaded) = self.uploaded.get(&fill.id()) {
-                let [scale, offset] = clip_transform(&fills.view, fills.canvas, uploaded.origin);
-                let color = color.to_array().map(|c| f32::from(c) / 255.0);
+        let (canvas, view) = (polygons.canvas, &polygons.view);
+        let pixel = [2.0 / canvas.width(), 2.0 / canvas.height()];
+        for (layer, placement) in layers.iter().zip(&self.placements) {
+            if let Some(uploaded) = self.uploaded.get(&layer.id()) {
+                let [scale, offset] = clip_transform(view, canvas, uploaded.origin);
+                let (color, width) = match layer {
+                    Layer::Fill(_, color) => (color, 0.0),
+                    Layer::Outline(_, stroke) => (&stroke.color, stroke.width),
+                };
+                let [r, g, b, a] = color.to_array().map(|c| f32::from(c) / 255.0);
                 let floats = [
-                    scale[0], scale[1], offset[0], offset[1], color[0], color[1], color[2],
-                    color[3],
+                    scale[0], scale[1], offset[0], offset[1], r, g, b, a, pixel[0], pixel[1],
+                    width, 0.0,
                 ];
                 queue.write_buffer(&placement.uniform, 0, &f32_bytes(&floats));
             }
@@ -163,9 +192,17 @@ impl FillPipeline {
     }
 }
 
-/// The fill's triangles on the GPU, as f32 positions relative to the centre of its bounding box.
-fn upload(device: &wgpu::Device, fill: &Fill) -> Uploaded {
-    let (lo, hi) = fill.points().iter().fold(
+/// A layer's points on the GPU, as f32 positions relative to the centre of their bounding box: a fill's vertices
+/// and triangles, or an outline's edges. `None` for an empty layer (wgpu has no empty buffers).
+fn upload(device: &wgpu::Device, layer: &Layer) -> Option<Uploaded> {
+    let points: &[Point] = match layer {
+        Layer::Fill(fill, _) => fill.points(),
+        Layer::Outline(outline, _) => outline.segments().as_flattened(),
+    };
+    if points.is_empty() || matches!(layer, Layer::Fill(fill, _) if fill.triangle_count() == 0) {
+        return None;
+    }
+    let (lo, hi) = points.iter().fold(
         (
             Point::new(f64::INFINITY, f64::INFINITY),
             Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
@@ -178,28 +215,36 @@ fn upload(device: &wgpu::Device, fill: &Fill) -> Uploaded {
         },
     );
     let origin = Point::new((lo.x + hi.x) / 2.0, (lo.y + hi.y) / 2.0);
-    let positions: Vec<f32> = (fill.points().iter())
+    let positions: Vec<f32> = (points.iter())
         .flat_map(|p| [(p.x - origin.x) as f32, (p.y - origin.y) as f32])
         .collect();
-    let indices: Vec<u8> = fill
-        .triangles()
-        .iter()
-        .flat_map(|i| i.to_le_bytes())
-        .collect();
-    Uploaded {
-        vertices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("polysweep fill vertices"),
-            contents: &f32_bytes(&positions),
-            usage: wgpu::BufferUsages::VERTEX,
-        }),
-        indices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("polysweep fill indices"),
-            contents: &indices,
-            usage: wgpu::BufferUsages::INDEX,
-        }),
-        index_count: fill.triangles().len() as u32,
-        origin,
-    }
+    let buffer = |contents: &[u8], usage| {
+        device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("polysweep polygons"),
+            contents,
+            usage,
+        })
+    };
+    let vertices = buffer(&f32_bytes(&positions), wgpu::BufferUsages::VERTEX);
+    Some(match layer {
+        Layer::Fill(fill, _) => {
+            let indices: Vec<u8> = (fill.triangles().iter())
+                .flat_map(|i| i.to_le_bytes())
+                .collect();
+            Uploaded {
+                vertices,
+                indices: Some(buffer(&indices, wgpu::BufferUsages::INDEX)),
+                count: fill.triangles().len() as u32,
+                origin,
+            }
+        }
+        Layer::Outline(outline, _) => Uploaded {
+            vertices,
+            indices: None,
+            count: outline.segments().len() as u32,
+            origin,
+        },
+    })
 }
 
 fn f32_bytes(values: &[f32]) -> Vec<u8> {
@@ -222,22 +267,37 @@ pub fn clip_transform(view: &View, canvas: Rect, origin: Point) -> [[f32; 2]; 2]
     ]
 }
 
-/// The fills of one frame, in drawing order, over `canvas` as `view` shows it: an egui paint callback. (One per
-/// frame: the placements are the pipeline's, one per layer.)
-pub struct Fills {
-    pub layers: Vec<(Fill, Color32)>,
+/// One layer of the picture: a fill in a colour, or an outline in a stroke (its width in points).
+pub enum Layer {
+    Fill(Fill, Color32),
+    Outline(Outline, Stroke),
+}
+
+impl Layer {
+    fn id(&self) -> u64 {
+        match self {
+            Layer::Fill(fill, _) => fill.id(),
+            Layer::Outline(outline, _) => outline.id(),
+        }
+    }
+}
+
+/// The polygons of one frame, layers in drawing order, over `canvas` as `view` shows it: an egui paint callback.
+/// (One per frame: the placements are the pipeline's, one per layer.)
+pub struct Polygons {
+    pub layers: Vec<Layer>,
     pub view: View,
     pub canvas: Rect,
 }
 
-impl Fills {
+impl Polygons {
     pub fn paint(self, painter: &egui::Painter) {
         let canvas = self.canvas;
         painter.add(egui_wgpu::Callback::new_paint_callback(canvas, self));
     }
 }
 
-impl CallbackTrait for Fills {
+impl CallbackTrait for Polygons {
     fn prepare(
         &self,
         device: &wgpu::Device,
@@ -261,13 +321,22 @@ impl CallbackTrait for Fills {
         let Some(pipeline) = resources.get::<FillPipeline>() else {
             return;
         };
-        render_pass.set_pipeline(&pipeline.pipeline);
-        for ((fill, _), placement) in self.layers.iter().zip(&pipeline.placements) {
-            if let Some(uploaded) = pipeline.uploaded.get(&fill.id()) {
-                render_pass.set_bind_group(0, &placement.bind_group, &[]);
-                render_pass.set_vertex_buffer(0, uploaded.vertices.slice(..));
-                render_pass.set_index_buffer(uploaded.indices.slice(..), wgpu::IndexFormat::Uint32);
-                render_pass.draw_indexed(0..uploaded.index_count, 0, 0..1);
+        for (layer, placement) in self.layers.iter().zip(&pipeline.placements) {
+            let Some(uploaded) = pipeline.uploaded.get(&layer.id()) else {
+                continue;
+            };
+            render_pass.set_bind_group(0, &placement.bind_group, &[]);
+            render_pass.set_vertex_buffer(0, uploaded.vertices.slice(..));
+            match &uploaded.indices {
+                Some(indices) => {
+                    render_pass.set_pipeline(&pipeline.fill);
+                    render_pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
+                    render_pass.draw_indexed(0..uploaded.count, 0, 0..1);
+                }
+                None => {
+                    render_pass.set_pipeline(&pipeline.outline);
+                    render_pass.draw(0..6, 0..uploaded.count);
+                }
             }
         }
     }
@@ -294,7 +363,10 @@ mod tests {
             .iter()
             .map(|e| e.name.as_str())
             .collect();
-        assert_eq!(entry_points, ["vs_main", "fs_gamma", "fs_linear"]);
+        assert_eq!(
+            entry_points,
+            ["vs_fill", "vs_outline", "fs_gamma", "fs_linear"]
+        );
     }
 
     #[test]

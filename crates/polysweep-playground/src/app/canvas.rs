@@ -7,10 +7,10 @@ use super::{
     Playground, Tool, BACKGROUND, HANDLE_RADIUS, LINE_INSIDE, LINE_OUTSIDE, OPERAND_EDGE,
     OPERAND_FILL, PIECE_FILLS, RESULT_EDGE, RESULT_FILL,
 };
-use crate::gpu::Fills;
+use crate::gpu::{Layer, Polygons};
 use crate::scene::{LineVertex, Operand, VertexId};
-use eframe::egui::{self, Color32, Mesh, Pos2, Rect, Sense, Shape, Stroke};
-use polysweep::{Point, Polygon};
+use eframe::egui::{self, Color32, Pos2, Rect, Sense, Shape, Stroke};
+use polysweep::Point;
 
 /// Above this many vertices an operand's handles are not drawn: they would cover the picture.
 const MAX_HANDLES: usize = 5000;
@@ -72,50 +72,46 @@ impl Playground {
         if self.snap {
             self.paint_grid(&painter, canvas);
         }
-        // The fills on the GPU (gpu.rs), in one paint callback, then the outlines over them.
-        let mut layers: Vec<_> = (self.derived.region_fills.iter().cloned())
+        // The polygons on the GPU (gpu.rs), in one paint callback: the operands' fills, the result's (or its
+        // pieces'), the result's outline, then the operands' outlines over them.
+        let derived = &self.derived;
+        let mut layers: Vec<_> = (derived.region_fills.iter().cloned())
             .zip(OPERAND_FILL)
+            .map(|(fill, colour)| Layer::Fill(fill, colour))
             .collect();
         let result_edge = Stroke::new(1.0, RESULT_EDGE);
-        match (&self.derived.cut, &self.derived.outcome) {
-            (Some(Ok(cut)), _) => {
+        match (&derived.cut, &derived.outcome) {
+            (Some(Ok(_)), _) => {
                 let colours = PIECE_FILLS.iter().copied().cycle();
-                layers.extend(self.derived.piece_fills.iter().cloned().zip(colours));
-                Fills {
-                    layers,
-                    view,
-                    canvas,
-                }
-                .paint(&painter);
-                paint_outline(&painter, canvas, &cut.pieces, to_screen, result_edge);
+                layers.extend(
+                    (derived.piece_fills.iter().cloned())
+                        .zip(colours)
+                        .map(|(fill, colour)| Layer::Fill(fill, colour)),
+                );
+                layers.push(Layer::Outline(derived.piece_outline.clone(), result_edge));
             }
-            (_, Some(Ok(outcome))) => {
-                layers.push((self.derived.result_fill.clone(), RESULT_FILL));
-                Fills {
-                    layers,
-                    view,
-                    canvas,
-                }
-                .paint(&painter);
-                paint_outline(&painter, canvas, &outcome.result.0, to_screen, result_edge);
+            (_, Some(Ok(_))) => {
+                layers.push(Layer::Fill(derived.result_fill.clone(), RESULT_FILL));
+                layers.push(Layer::Outline(derived.result_outline.clone(), result_edge));
             }
-            _ => Fills {
-                layers,
-                view,
-                canvas,
-            }
-            .paint(&painter),
+            _ => {}
         }
+        for (which, (_, outline)) in [Operand::Subject, Operand::Clipping]
+            .into_iter()
+            .zip(&derived.operand_outlines)
+        {
+            let edge = Stroke::new(1.5, OPERAND_EDGE[which.index()]);
+            layers.push(Layer::Outline(outline.clone(), edge));
+        }
+        Polygons {
+            layers,
+            view,
+            canvas,
+        }
+        .paint(&painter);
         for which in [Operand::Subject, Operand::Clipping] {
             let operand = self.scene.operand(which);
             let edge = OPERAND_EDGE[which.index()];
-            paint_outline(
-                &painter,
-                canvas,
-                &operand.0,
-                to_screen,
-                Stroke::new(1.5, edge),
-            );
             if operand.vertex_count() <= MAX_HANDLES {
                 let radius = if which == self.active { 3.5 } else { 2.5 };
                 for p in operand.0.iter().flat_map(|p| p.rings().flatten()) {
@@ -236,42 +232,4 @@ impl Playground {
             );
         }
     }
-}
-
-/// Draws every ring of `polygons` that is on screen, as one mesh of a thin quad per edge. egui's own path stroke
-/// joins edges with miters, which shoot far out at the hairpin turns of real coastlines; separate quads have no
-/// joins. Vertices closer than a pixel to the last one drawn are skipped: zoomed out, a coastline has many per
-/// pixel.
-fn paint_outline(
-    painter: &egui::Painter,
-    canvas: Rect,
-    polygons: &[Polygon],
-    to_screen: impl Fn(Point) -> Pos2,
-    stroke: Stroke,
-) {
-    let mut mesh = Mesh::default();
-    let mut points: Vec<Pos2> = Vec::new();
-    for ring in polygons.iter().flat_map(|p| p.rings()) {
-        points.clear();
-        for p in ring.iter().chain(ring.first()) {
-            let q = to_screen(*p);
-            if points.last().is_none_or(|last| last.distance_sq(q) >= 1.0) {
-                points.push(q);
-            }
-        }
-        if points.len() < 3 || !Rect::from_points(&points).intersects(canvas) {
-            continue;
-        }
-        for edge in points.windows(2) {
-            let (a, b) = (edge[0], edge[1]);
-            let half = (b - a).normalized().rot90() * (stroke.width / 2.0);
-            let base = mesh.vertices.len() as u32;
-            for corner in [a + half, b + half, b - half, a - half] {
-                mesh.colored_vertex(corner, stroke.color);
-            }
-            mesh.add_triangle(base, base + 1, base + 2);
-            mesh.add_triangle(base, base + 2, base + 3);
-        }
-    }
-    painter.add(Shape::mesh(mesh));
 }

@@ -3,7 +3,7 @@
 //! and mid-drag only what fits in a frame.
 
 use super::Playground;
-use crate::fill::Fill;
+use crate::fill::{Fill, Outline};
 use crate::operation::{self, Cut, Op, Outcome};
 use crate::scene::Operand;
 use polysweep::{Error, FillRule, MultiPolygon};
@@ -18,15 +18,19 @@ pub(super) struct Derived {
     /// The operand revision and fill rule each region fill was computed from.
     pub(super) region_inputs: [Option<(u64, FillRule)>; 2],
     pub(super) region_fills: [Fill; 2],
+    /// The operands' rings as drawn, and the revision they are of: kept up to date on every frame (cheap).
+    pub(super) operand_outlines: [(Option<u64>, Outline); 2],
     pub(super) result_inputs: Option<ResultInputs>,
     pub(super) outcome: Option<Result<Outcome, Error>>,
     pub(super) result_fill: Fill,
+    pub(super) result_outline: Outline,
     /// The result's inputs and the lines revision the cut was computed from.
     pub(super) cut_inputs: Option<(ResultInputs, u64)>,
     /// The lines against the result: none without lines, or without a result to clip them by.
     pub(super) cut: Option<Result<Cut, Error>>,
     /// One fill per piece of the cut.
     pub(super) piece_fills: Vec<Fill>,
+    pub(super) piece_outline: Outline,
     /// How long the last computation of each took (sweeps and triangulation), to decide what can run mid-drag.
     pub(super) region_milliseconds: [f64; 2],
     pub(super) result_milliseconds: f64,
@@ -63,6 +67,11 @@ impl Playground {
         let mut up_to_date = true;
         for which in [Operand::Subject, Operand::Clipping] {
             let i = which.index();
+            let revision = Some(self.scene.revision(which));
+            if self.derived.operand_outlines[i].0 != revision {
+                self.derived.operand_outlines[i] =
+                    (revision, Outline::of(&self.scene.operand(which).0));
+            }
             let inputs = Some((self.scene.revision(which), self.fill_rule));
             if self.derived.region_inputs[i] == inputs {
                 continue;
@@ -98,6 +107,10 @@ impl Playground {
                     .as_ref()
                     .map(|o| Fill::of(&o.result))
                     .unwrap_or_default();
+                derived.result_outline = outcome
+                    .as_ref()
+                    .map(|o| Outline::of(&o.result.0))
+                    .unwrap_or_default();
                 derived.outcome = Some(outcome);
             });
             derived.result_inputs = inputs;
@@ -124,6 +137,10 @@ impl Playground {
                     .map(|piece| Fill::of(&MultiPolygon::new(vec![piece.clone()])))
                     .collect(),
                 _ => Vec::new(),
+            };
+            derived.piece_outline = match &derived.cut {
+                Some(Ok(cut)) => Outline::of(&cut.pieces),
+                _ => Outline::default(),
             };
         });
         derived.cut_inputs = inputs;
