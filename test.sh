@@ -5,7 +5,7 @@
 # feature's), the playground's native tests and the doc examples, builds the npm package and the playground for the
 # browser, and runs the package's Node, TypeScript and browser tests and the playground's browser test, the
 # package's differential test against GEOS and an exact reference (tests/differential), the layer-overlay benchmark
-# at its small size, and a bounded fuzz run of the core.
+# at its small size, the playground's frame times, and a bounded fuzz run of the core.
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -34,6 +34,8 @@ cargo test -p polysweep --features geo-types --test geo_types
 PROPTEST_CASES=3000 PROPTEST_MAX_GLOBAL_REJECTS=100000 cargo test --release -p polysweep --test properties
 # The Table 1 example of the README, end to end.
 cargo run --quiet --release -p polysweep --features geojson --example boolean -- intersection tests/data/land-50m.json.gz tests/data/squares-3895.json.gz > /dev/null
+# The playground's CPU frame times at 60k, 1M and 4M vertices (printed, not asserted: CI has no GPU).
+cargo run --quiet --release -p polysweep-playground --example frame_time
 
 # --- the npm package and the playground, in Node and in headless Chromium ---
 web/build.sh

@@ -1,14 +1,17 @@
-//! CPU time of playground frames on the paper's Table 1 data (land, 59,212 vertices, × 8 squares), without a GPU:
-//! the app's frame plus egui's tessellation, as the renderer would receive it (the fills are not in it: the GPU
-//! pipeline of gpu.rs uploads them once and only moves them per frame). Prints medians in milliseconds.
+//! CPU time of playground frames, without a GPU: the app's frame plus egui's tessellation, as the renderer would
+//! receive it (the polygons are not in it: the GPU pipeline of gpu.rs uploads them once per change and only moves
+//! them per frame). On the paper's Table 1 data (land, 59,212 vertices, × 8 squares) and on 1M and 4M vertices (a
+//! grid of 64-gons against a few squares). Prints medians in milliseconds.
 //!
 //! ```text
 //! cargo run --release -p polysweep-playground --example frame_time
 //! ```
 
 use eframe::egui::{self, Event, Modifiers, PointerButton, Pos2, RawInput, Rect, Vec2};
+use polysweep::MultiPolygon;
 use polysweep_playground::operation::Op;
 use polysweep_playground::presets::Preset;
+use polysweep_playground::view::View;
 use polysweep_playground::Playground;
 use std::time::Instant;
 
@@ -35,54 +38,98 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
+/// `n` × `n` 64-gons of radius 0.4 on the unit grid (64·n² vertices), and four squares over parts of it.
+fn polygon_grid(n: usize) -> (MultiPolygon, MultiPolygon) {
+    let gon = |cx: f64, cy: f64| {
+        vec![(0..64)
+            .map(|k| {
+                let angle = k as f64 * std::f64::consts::TAU / 64.0;
+                [cx + 0.4 * angle.cos(), cy + 0.4 * angle.sin()]
+            })
+            .collect::<Vec<_>>()]
+    };
+    let gons: Vec<_> = (0..n * n)
+        .map(|k| gon((k % n) as f64, (k / n) as f64))
+        .collect();
+    let side = n as f64 / 3.0;
+    let squares: Vec<_> = [(0.1, 0.1), (0.6, 0.1), (0.1, 0.6), (0.6, 0.6)]
+        .iter()
+        .map(|&(x, y)| {
+            let (x, y) = (x * n as f64, y * n as f64);
+            vec![vec![
+                [x, y],
+                [x + side, y],
+                [x + side, y + side],
+                [x, y + side],
+            ]]
+        })
+        .collect();
+    (
+        MultiPolygon::from_coordinates(&gons),
+        MultiPolygon::from_coordinates(&squares),
+    )
+}
+
 fn main() {
     let ctx = egui::Context::default();
-    let mut app = Playground::default();
     let mut time = 0.0;
-    app.load_preset(Preset::Table1 { squares: 8 });
-    for op in [Op::Intersection, Op::Union] {
-        app.operation = op;
-        frame(&ctx, &mut app, &mut time, vec![]);
-        let idle: Vec<f64> = (0..20)
-            .map(|_| frame(&ctx, &mut app, &mut time, vec![]))
-            .collect();
-        // Pan: drag across empty canvas space (no vertex under the press).
-        let start = Pos2::new(1590.0, 990.0);
-        frame(&ctx, &mut app, &mut time, vec![Event::PointerMoved(start)]);
-        let press = Event::PointerButton {
-            pos: start,
-            button: PointerButton::Primary,
-            pressed: true,
-            modifiers: Modifiers::NONE,
-        };
-        frame(&ctx, &mut app, &mut time, vec![press]);
-        let pan: Vec<f64> = (1..=30)
-            .map(|i| {
-                frame(
-                    &ctx,
-                    &mut app,
-                    &mut time,
-                    vec![Event::PointerMoved(start - Vec2::splat(i as f32 * 3.0))],
-                )
-            })
-            .collect();
-        let release = Event::PointerButton {
-            pos: start,
-            button: PointerButton::Primary,
-            pressed: false,
-            modifiers: Modifiers::NONE,
-        };
-        frame(&ctx, &mut app, &mut time, vec![release]);
-        let outcome = app
-            .outcome()
-            .as_ref()
-            .map(|o| o.milliseconds)
-            .unwrap_or(f64::NAN);
-        println!(
-            "{op:?}: idle frame {:.2} ms, panning frame {:.2} ms, the operation itself {:.2} ms",
-            median(idle),
-            median(pan),
-            outcome
-        );
+    let datasets: [(&str, Box<dyn Fn(&mut Playground)>); 3] = [
+        (
+            "land × 8 squares (59,212 + 32 vertices)",
+            Box::new(|app| app.load_preset(Preset::Table1 { squares: 8 })),
+        ),
+        ("1M vertices", Box::new(|app| load_grid(app, 125))),
+        ("4M vertices", Box::new(|app| load_grid(app, 250))),
+    ];
+    for (name, load) in datasets {
+        let mut app = Playground::default();
+        load(&mut app);
+        for op in [Op::Intersection, Op::Union] {
+            app.operation = op;
+            let first = frame(&ctx, &mut app, &mut time, vec![]);
+            let (idle, pan) = idle_and_pan(&ctx, &mut app, &mut time);
+            let outcome = app
+                .outcome()
+                .as_ref()
+                .map(|o| o.milliseconds)
+                .unwrap_or(f64::NAN);
+            println!(
+                "{name}, {op:?}: idle frame {idle:.2} ms, panning frame {pan:.2} ms; the operation itself \
+                 {outcome:.1} ms, the frame that computed it and its fills {first:.1} ms",
+            );
+        }
     }
+}
+
+/// Loads `polygon_grid(n)` as P and Q, in view.
+fn load_grid(app: &mut Playground, n: usize) {
+    let (p, q) = polygon_grid(n);
+    app.scene.replace_both(p, q);
+    let middle = (n as f64 - 1.0) / 2.0;
+    app.view = View {
+        center: polysweep::Point::new(middle, middle),
+        scale: f64::from(SCREEN.y) / (n as f64 + 1.0),
+    };
+}
+
+/// Median frames: idle, then panning (a drag across empty canvas space, no vertex under the press).
+fn idle_and_pan(ctx: &egui::Context, app: &mut Playground, time: &mut f64) -> (f64, f64) {
+    let idle: Vec<f64> = (0..20).map(|_| frame(ctx, app, time, vec![])).collect();
+    let start = Pos2::new(1590.0, 990.0);
+    frame(ctx, app, time, vec![Event::PointerMoved(start)]);
+    let button = |pressed| Event::PointerButton {
+        pos: start,
+        button: PointerButton::Primary,
+        pressed,
+        modifiers: Modifiers::NONE,
+    };
+    frame(ctx, app, time, vec![button(true)]);
+    let pan: Vec<f64> = (1..=30)
+        .map(|i| {
+            let to = start - Vec2::splat(i as f32 * 3.0);
+            frame(ctx, app, time, vec![Event::PointerMoved(to)])
+        })
+        .collect();
+    frame(ctx, app, time, vec![button(false)]);
+    (median(idle), median(pan))
 }
