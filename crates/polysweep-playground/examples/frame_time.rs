@@ -70,16 +70,18 @@ fn polygon_grid(n: usize) -> (MultiPolygon, MultiPolygon) {
     )
 }
 
+/// Loads a data set into the app.
+type Load = fn(&mut Playground);
+
 fn main() {
     let ctx = egui::Context::default();
     let mut time = 0.0;
-    let datasets: [(&str, Box<dyn Fn(&mut Playground)>); 3] = [
-        (
-            "land × 8 squares (59,212 + 32 vertices)",
-            Box::new(|app| app.load_preset(Preset::Table1 { squares: 8 })),
-        ),
-        ("1M vertices", Box::new(|app| load_grid(app, 125))),
-        ("4M vertices", Box::new(|app| load_grid(app, 250))),
+    let datasets: [(&str, Load); 3] = [
+        ("land × 8 squares (59,212 + 32 vertices)", |app| {
+            app.load_preset(Preset::Table1 { squares: 8 })
+        }),
+        ("1M vertices", |app| load_grid(app, 125)),
+        ("4M vertices", |app| load_grid(app, 250)),
     ];
     for (name, load) in datasets {
         let mut app = Playground::default();

@@ -10,6 +10,7 @@
 //! place.
 
 use polysweep::{LineString, Location, MultiPolygon, Point, Polygon, Ring};
+use std::cell::{Ref, RefCell};
 
 /// Which operand: the subject P or the clipping polygon Q.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -97,6 +98,11 @@ impl State {
     }
 }
 
+/// `[min x, min y, max x, max y]`.
+type Bounds = [f64; 4];
+/// An operand revision and the bounds of each of its polygons.
+type RevisionBounds = (u64, Vec<Bounds>);
+
 /// The two operands, the lines and their history.
 #[derive(Clone, Debug, Default)]
 pub struct Scene {
@@ -110,6 +116,10 @@ pub struct Scene {
     revisions: [u64; 2],
     /// Bumped whenever the lines change, as `revisions` are for the operands.
     lines_revision: u64,
+    /// Per operand, the bounding box of each polygon and the revision they are of, made when first asked for:
+    /// `vertex_near` looks only into polygons near the pointer, so that hovering over millions of vertices stays
+    /// cheap.
+    polygon_bounds: RefCell<[Option<RevisionBounds>; 2]>,
 }
 
 impl Scene {
@@ -296,7 +306,16 @@ impl Scene {
     pub fn vertex_near(&self, at: Point, radius: f64, prefer: Operand) -> Option<VertexId> {
         let mut best: Option<(f64, VertexId)> = None;
         for operand in [prefer, other(prefer)] {
+            let bounds = self.polygon_bounds(operand);
             for (p, polygon) in self.operand(operand).0.iter().enumerate() {
+                let [x0, y0, x1, y1] = bounds[p];
+                if at.x < x0 - radius
+                    || at.x > x1 + radius
+                    || at.y < y0 - radius
+                    || at.y > y1 + radius
+                {
+                    continue;
+                }
                 for (r, ring) in polygon.rings().enumerate() {
                     for (v, q) in ring.iter().enumerate() {
                         let d = (q.x - at.x).hypot(q.y - at.y);
@@ -316,6 +335,33 @@ impl Scene {
             }
         }
         best.map(|(_, id)| id)
+    }
+
+    /// `[min x, min y, max x, max y]` of each polygon of the operand, made anew when the operand has changed.
+    fn polygon_bounds(&self, which: Operand) -> Ref<'_, Vec<Bounds>> {
+        let (i, revision) = (which.index(), self.revision(which));
+        if self.polygon_bounds.borrow()[i]
+            .as_ref()
+            .is_none_or(|(r, _)| *r != revision)
+        {
+            let bounds = (self.operand(which).0.iter())
+                .map(|polygon| {
+                    polygon.rings().flatten().fold(
+                        [
+                            f64::INFINITY,
+                            f64::INFINITY,
+                            f64::NEG_INFINITY,
+                            f64::NEG_INFINITY,
+                        ],
+                        |[x0, y0, x1, y1], q| [x0.min(q.x), y0.min(q.y), x1.max(q.x), y1.max(q.y)],
+                    )
+                })
+                .collect();
+            self.polygon_bounds.borrow_mut()[i] = Some((revision, bounds));
+        }
+        Ref::map(self.polygon_bounds.borrow(), |all| {
+            &all[i].as_ref().expect("made above").1
+        })
     }
 
     /// Adds a line drawn by the user, as one undo step. A line without two distinct vertices, which has no length

@@ -317,3 +317,40 @@ fn an_edit_invalidates_only_what_derives_from_its_operand() {
         "and the result follows the undo"
     );
 }
+
+#[test]
+fn the_vertex_under_the_pointer_is_found_among_many_polygons_and_follows_edits() {
+    let mut app = Playground::default();
+    for k in 0..5 {
+        draw_square(&mut app, Operand::Subject, 10.0 * k as f64, 0.0, 2.0);
+    }
+    draw_square(&mut app, Operand::Clipping, 21.0, 1.0, 2.0);
+    let scene = &app.scene;
+    let corner = |polygon, vertex| VertexId {
+        operand: Operand::Subject,
+        polygon,
+        ring: 0,
+        vertex,
+    };
+    // (22, 2) is the fourth polygon's corner (index 2); Q's corner (21, 1) is farther than the radius from it.
+    assert_eq!(
+        scene.vertex_near(p(22.05, 2.0), 0.3, Operand::Subject),
+        Some(corner(2, 2))
+    );
+    assert_eq!(scene.vertex_near(p(5.0, 5.0), 0.3, Operand::Subject), None);
+    let q = scene
+        .vertex_near(p(21.1, 1.0), 0.3, Operand::Subject)
+        .unwrap();
+    assert_eq!(q.operand, Operand::Clipping);
+    // Moved far away, the vertex is found where it went and no longer where it was.
+    app.scene.move_vertex(corner(4, 0), p(100.0, 100.0));
+    assert_eq!(
+        app.scene
+            .vertex_near(p(100.0, 100.1), 0.3, Operand::Subject),
+        Some(corner(4, 0))
+    );
+    assert_eq!(
+        app.scene.vertex_near(p(40.0, 0.0), 0.3, Operand::Subject),
+        None
+    );
+}
