@@ -3,7 +3,8 @@
 // filled with the result colour exactly where that operation's result is and nowhere else; a vertex drag and undo
 // update it; pasted GeoJSON loads, and a bad coordinate shows an error without breaking the app; a line drawn with
 // the line tool splits the result into pieces of distinct colours and shows its part inside, and undo removes it.
-// All of it twice: on WebGL2 and on WebGPU, each checked to be the renderer the app chose.
+// All of it twice: on WebGL2 and on WebGPU, each checked to be the renderer the app chose. Then, on both again,
+// concave shapes with a hole, overlapping rings and a self-crossing ring, under even-odd and non-zero.
 //
 // Expectations are independent of the app: which of four probe points lies in each result follows from the two
 // squares by hand. The probes sit mid-region, away from edges, so antialiasing cannot touch them.
@@ -92,13 +93,13 @@ async function expectScreen(page, check, describe) {
   assert.fail(describe(shot));
 }
 
-/** Expects the result colour at exactly the probes named in `filled`, in `view`. */
-async function expectFill(page, filled, label, view = screen) {
-  const names = Object.keys(PROBES);
+/** Expects the result colour at exactly the probes named in `filled` (of `probes`), in `view`. */
+async function expectFill(page, filled, label, view = screen, probes = PROBES) {
+  const names = Object.keys(probes);
   let seen;
   for (let attempt = 0; attempt < 40; attempt++) {
     const shot = await screenshot(page);
-    const colours = names.map((n) => view(PROBES[n])).map(({ x, y }) => shot.at(x, y));
+    const colours = names.map((n) => view(probes[n])).map(({ x, y }) => shot.at(x, y));
     seen = Object.fromEntries(names.map((n, i) => [n, colours[i]]));
     if (names.every((n) => isResultColour(seen[n]) === filled.includes(n))) return;
     await page.waitForTimeout(250);
@@ -110,6 +111,77 @@ async function expectFill(page, filled, label, view = screen) {
 // WebGL2 otherwise. Both run on SwiftShader here, the CPU renderer of a machine without a GPU.
 for (const renderer of ['WebGL2', 'WebGPU']) {
   test(`${renderer}: the playground draws two squares with the mouse and fills each operation correctly`, { timeout: 180_000 }, () => drawAndCheck(renderer));
+}
+
+// Shapes that test the fill: P is a square A = [0, 8]² with a hole H = [1, 3]² (a ring started inside A becomes
+// its hole, wound the other way) and a square B = [4, 12]² overlapping A, drawn the same way round as A; Q is a
+// self-crossing bow-tie (2, 2), (10, 10), (10, 2), (2, 10), whose lobes, left L and right R, meet at (6, 6).
+// Under even-odd, P is A ⊕ H ⊕ B (the overlap of A and B is empty); under non-zero, (A − H) ∪ B. Both rules fill
+// both lobes of Q (winding +1 and −1). Each probe's membership, worked out from the shapes by hand:
+const SHAPES = {
+  A: [[0, 0], [8, 0], [8, 8], [0, 8]],
+  H: [[1, 1], [3, 1], [3, 3], [1, 3]],
+  B: [[12, 12], [4, 12], [4, 4], [12, 4]],
+  Q: [[2, 2], [10, 10], [10, 2], [2, 10]],
+};
+const SHAPE_PROBES = {
+  // name: [position, in P under even-odd, in P under non-zero, in Q]
+  hole: [[1.5, 2.5], false, false, false],
+  aOnly: [[0.5, 5], true, true, false],
+  aAndL: [[3, 6], true, true, true],
+  overlapAndL: [[5, 5.5], false, true, true],
+  overlap: [[7, 4.5], false, true, false],
+  bAndR: [[9, 6], true, true, true],
+  bOnly: [[11, 11], true, true, false],
+  rOnly: [[9.5, 3], false, false, true],
+  nothing: [[15, 1], false, false, false],
+};
+const RESULTS = [
+  { key: 'Digit1', name: 'intersection', holds: (p, q) => p && q },
+  { key: 'Digit2', name: 'union', holds: (p, q) => p || q },
+  { key: 'Digit3', name: 'P − Q', holds: (p, q) => p && !q },
+  { key: 'Digit4', name: 'Q − P', holds: (p, q) => q && !p },
+  { key: 'Digit5', name: 'xor', holds: (p, q) => p !== q },
+];
+
+for (const renderer of ['WebGL2', 'WebGPU']) {
+  test(`${renderer}: a holed, overlapping P and a self-crossing Q, every operation under even-odd and non-zero`, { timeout: 180_000 }, () =>
+    drawShapesAndCheck(renderer));
+}
+
+async function drawShapesAndCheck(renderer) {
+  const { context, close } = await launchChromium({ webgpu: renderer === 'WebGPU' });
+  const page = await context.newPage();
+  await page.setViewportSize(VIEWPORT);
+  try {
+    await page.goto(`${origin}/index.html`);
+    await page.waitForFunction(() => window.playgroundReady || window.playgroundFailure, null, { timeout: 120_000 });
+    assert.equal(await page.evaluate(() => window.playgroundRenderer), renderer);
+    await page.waitForTimeout(500);
+    // Each ring: its corners, then a click on its first corner to close it.
+    const drawRing = async (corners) => {
+      for (const corner of [...corners, corners[0]]) {
+        await page.mouse.click(screen(corner).x, screen(corner).y);
+        await page.waitForTimeout(400);
+      }
+    };
+    for (const ring of [SHAPES.A, SHAPES.H, SHAPES.B]) await drawRing(ring);
+    await page.keyboard.press('KeyQ');
+    await drawRing(SHAPES.Q);
+    const probes = Object.fromEntries(Object.entries(SHAPE_PROBES).map(([name, [at]]) => [name, at]));
+    for (const [ruleKey, rule, inP] of [['KeyE', 'even-odd', 1], ['KeyN', 'non-zero', 2]]) {
+      await page.keyboard.press(ruleKey);
+      for (const { key, name, holds } of RESULTS) {
+        await page.keyboard.press(key);
+        const filled = Object.keys(SHAPE_PROBES).filter((n) => holds(SHAPE_PROBES[n][inP], SHAPE_PROBES[n][3]));
+        await expectFill(page, filled, `${rule}, ${name}`, screen, probes);
+      }
+    }
+    assert.equal(await page.evaluate(() => window.playgroundFailure), undefined);
+  } finally {
+    await page.close();
+    await close();
+  }
 }
 
 async function drawAndCheck(renderer) {

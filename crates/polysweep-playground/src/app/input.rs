@@ -5,7 +5,7 @@ use super::{Playground, Tool, HANDLE_RADIUS};
 use crate::operation::Op;
 use crate::scene::{LineVertex, Operand, Scene, VertexId};
 use eframe::egui::{self, Key, Modifiers};
-use polysweep::Point;
+use polysweep::{FillRule, Point};
 
 /// What a drag on the canvas is doing.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -71,6 +71,12 @@ impl Playground {
                 if i.consume_key(Modifiers::NONE, key) {
                     self.operation = op;
                 }
+            }
+            if i.consume_key(Modifiers::NONE, Key::E) {
+                self.fill_rule = FillRule::EvenOdd;
+            }
+            if i.consume_key(Modifiers::NONE, Key::N) {
+                self.fill_rule = FillRule::NonZero;
             }
             if i.consume_key(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z)
                 || i.consume_key(Modifiers::COMMAND, Key::Y)

@@ -34,8 +34,8 @@ impl Playground {
         }
         ui.horizontal_wrapped(|ui| {
             ui.label("Fill rule:");
-            ui.radio_value(&mut self.fill_rule, FillRule::EvenOdd, "even-odd");
-            ui.radio_value(&mut self.fill_rule, FillRule::NonZero, "non-zero");
+            ui.radio_value(&mut self.fill_rule, FillRule::EvenOdd, "even-odd [E]");
+            ui.radio_value(&mut self.fill_rule, FillRule::NonZero, "non-zero [N]");
             ui.radio_value(&mut self.fill_rule, FillRule::Positive, "positive");
             ui.radio_value(&mut self.fill_rule, FillRule::Negative, "negative");
             ui.radio_value(&mut self.fill_rule, FillRule::Structure, "structure");
