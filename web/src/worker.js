@@ -96,8 +96,10 @@ export function createWorker({ spawn } = {}) {
       if (signal?.aborted) throw abortError();
       const job = { method, args, transfer, signal, onProgress, resolve, reject };
       job.onAbort = () => {
+        const waiting = queue.indexOf(job);
         if (running === job) stop();
-        else queue.splice(queue.indexOf(job), 1);
+        else if (waiting >= 0) queue.splice(waiting, 1);
+        else return; // settled already: nothing to abort
         settle(job, () => reject(abortError()));
       };
       signal?.addEventListener('abort', job.onAbort, { once: true });
