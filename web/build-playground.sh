@@ -6,3 +6,4 @@ cd "$(dirname "$0")/.."
 cargo build --profile playground --target wasm32-unknown-unknown -p polysweep-playground --lib
 wasm-bindgen --target web --no-typescript --out-dir target/playground \
   target/wasm32-unknown-unknown/playground/polysweep_playground.wasm
+cp crates/polysweep-playground/worker.js target/playground/worker.js

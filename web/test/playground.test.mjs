@@ -296,3 +296,84 @@ async function drawAndCheck(renderer) {
     await close();
   }
 }
+
+// The land preset (Natural Earth land × 8 squares, ?preset=land-8), intersection: the bottom-right corner of the
+// top-left square, (−100.28, 5.48), open Pacific far from any island, is dragged to (−60, −10) with snapping off
+// (key G). The square becomes the quadrilateral (−169.72, 5.48), (−60, −10), (−100.28, 74.92), (−169.72, 74.92),
+// which now also covers northern South America. The probes, from the geography and that quadrilateral by hand
+// (each several degrees from a coast and from the quadrilateral's edges):
+const LAND_PROBES = {
+  // name: [position, in the intersection before the drag, after it]
+  canada: [[-110, 60], true, true], // land, in the square before and after
+  amazonas: [[-70, -5], false, true], // Brazil, inland: under the new bottom edge's sweep
+  colombia: [[-74, 4], false, true], // inland, south of the square's old bottom edge (5.48)
+  pacific: [[-110, 0], false, false], // ocean inside the quadrilateral
+  para: [[-50, -8], false, false], // Brazil, inland, right of the new edge to (−100.28, 74.92)
+};
+const LAND_CORNER = [-100.280278125, 5.480235156250018];
+const LAND_TARGET = [-60, -10];
+const landView = fitted([-180, -90], [180, 83.59960937500003]);
+const counters = (page) => page.evaluate(() => Array.from(window.playgroundHandle.counters()));
+
+for (const renderer of ['WebGL2', 'WebGPU']) {
+  test(`${renderer}: dragging a square of the land preset, the canvas keeps drawing while the worker computes`, { timeout: 240_000 }, () =>
+    dragLandAndCheck(renderer));
+}
+
+async function dragLandAndCheck(renderer) {
+  const { context, close } = await launchChromium({ webgpu: renderer === 'WebGPU' });
+  const page = await context.newPage();
+  await page.setViewportSize(VIEWPORT);
+  const problems = [];
+  page.on('pageerror', (error) => problems.push(`page error: ${error.stack ?? error.message}`));
+  page.on('console', (message) => {
+    if (message.type() === 'error' || message.text().includes('worker')) problems.push(`console: ${message.text()}`);
+  });
+  try {
+    await page.goto(`${origin}/index.html?preset=land-8`);
+    await page.waitForFunction(() => window.playgroundReady || window.playgroundFailure, null, { timeout: 120_000 });
+    assert.equal(await page.evaluate(() => window.playgroundRenderer), renderer);
+    const probes = Object.fromEntries(Object.entries(LAND_PROBES).map(([name, [at]]) => [name, at]));
+    const filled = (i) => Object.keys(LAND_PROBES).filter((name) => LAND_PROBES[name][i]);
+    await expectFill(page, filled(1), 'land ∩ 8 squares', landView, probes);
+    await page.waitForFunction(() => !window.playgroundHandle.pending(), null, { timeout: 60_000 });
+    await page.keyboard.press('KeyG');
+
+    const [from, to] = [landView(LAND_CORNER), landView(LAND_TARGET)];
+    const [framesBefore, , resultsBefore] = await counters(page);
+    const started = Date.now();
+    await page.mouse.move(from.x, from.y);
+    await page.mouse.down();
+    const steps = 10;
+    for (let i = 1; i <= steps; i++) {
+      await page.mouse.move(from.x + ((to.x - from.x) * i) / steps, from.y + ((to.y - from.y) * i) / steps);
+      await page.waitForTimeout(50);
+    }
+    await page.mouse.up();
+    const [framesAtRelease, pendingFramesAtRelease, resultsAtRelease] = await counters(page);
+    await page.waitForFunction(() => !window.playgroundHandle.pending(), null, { timeout: 60_000 });
+    const settled = Date.now();
+    const [framesAfter, pendingFrames, resultsAfter, inWorker, operationMs] = await counters(page);
+    await expectFill(page, filled(2), 'land ∩ squares after the drag', landView, probes);
+
+    const seconds = (settled - started) / 1000;
+    console.log(
+      `${renderer}, land × 8 drag: ${framesAfter - framesBefore} frames in ${seconds.toFixed(1)} s ` +
+        `(${((framesAfter - framesBefore) / seconds).toFixed(1)} a second; ${pendingFrames} drawn so far while a ` +
+        `result was pending), ${resultsAfter - resultsBefore} results from the worker ` +
+        `(${((resultsAfter - resultsBefore) / seconds).toFixed(1)} a second; the operation itself took ` +
+        `${operationMs.toFixed(0)} ms in the worker, SwiftShader drawing on the same two cores)`,
+    );
+    // The drag asked for results while it moved; the worker computed them, and the canvas went on drawing
+    // meanwhile (not asserted: how many frames, which depends on the machine).
+    assert.equal(inWorker, 1, 'the results were computed in the worker');
+    assert.ok(resultsAtRelease > resultsBefore, 'results came during the drag');
+    assert.ok(resultsAfter > resultsBefore);
+    assert.ok(pendingFramesAtRelease > 0, 'frames were drawn while a result was pending');
+    assert.ok(framesAtRelease - framesBefore >= steps, 'a frame at least for every move');
+    assert.deepEqual(problems, [], `the page reported:\n${problems.join('\n')}`);
+  } finally {
+    await page.close();
+    await close();
+  }
+}

@@ -1,19 +1,21 @@
 //! CPU time of playground frames, without a GPU: the app's frame plus egui's tessellation, as the renderer would
 //! receive it (the polygons are not in it: the GPU pipeline of gpu.rs uploads them once per change and only moves
 //! them per frame). On the paper's Table 1 data (land, 59,212 vertices, × 8 squares) and on 1M and 4M vertices (a
-//! grid of 64-gons against a few squares). Prints medians in milliseconds.
+//! grid of 64-gons against a few squares): frames while the result is computed on a thread, idle and panning
+//! frames, and how many results a second follow a dragged vertex. Prints milliseconds.
 //!
 //! ```text
 //! cargo run --release -p polysweep-playground --example frame_time
 //! ```
 
 use eframe::egui::{self, Event, Modifiers, PointerButton, Pos2, RawInput, Rect, Vec2};
-use polysweep::MultiPolygon;
+use polysweep::{MultiPolygon, Point};
 use polysweep_playground::operation::Op;
 use polysweep_playground::presets::Preset;
+use polysweep_playground::scene::{Operand, VertexId};
 use polysweep_playground::view::View;
 use polysweep_playground::Playground;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 const SCREEN: Vec2 = Vec2::new(1600.0, 1000.0);
 
@@ -88,7 +90,7 @@ fn main() {
         load(&mut app);
         for op in [Op::Intersection, Op::Union] {
             app.operation = op;
-            let first = frame(&ctx, &mut app, &mut time, vec![]);
+            let (wait, frames) = paced_frames(&ctx, &mut app, &mut time, |app, _| app.pending());
             let (idle, pan) = idle_and_pan(&ctx, &mut app, &mut time);
             let outcome = app
                 .outcome()
@@ -96,11 +98,55 @@ fn main() {
                 .map(|o| o.milliseconds)
                 .unwrap_or(f64::NAN);
             println!(
-                "{name}, {op:?}: idle frame {idle:.2} ms, panning frame {pan:.2} ms; the operation itself \
-                 {outcome:.1} ms, the frame that computed it and its fills {first:.1} ms",
+                "{name}, {op:?}: the result and its fills came {wait:.0} ms after the change, computed on a \
+                 thread while {} frames were drawn (median {:.2} ms, longest {:.2} ms); the operation itself \
+                 {outcome:.1} ms; idle frame {idle:.2} ms, panning frame {pan:.2} ms",
+                frames.len(),
+                median(frames.clone()),
+                frames.iter().copied().fold(0.0, f64::max),
             );
         }
+        // A vertex of Q dragged for two seconds, moved on every frame: how often the shown result follows it.
+        let corner = VertexId {
+            operand: Operand::Clipping,
+            polygon: 0,
+            ring: 0,
+            vertex: 1,
+        };
+        let start = app.scene.point(corner).expect("Q has a polygon");
+        let results = app.results_received();
+        let (_, frames) = paced_frames(&ctx, &mut app, &mut time, |app, i| {
+            let to = Point::new(start.x + i as f64 * 0.01, start.y);
+            app.scene.move_vertex(corner, to);
+            i < 120
+        });
+        let results = app.results_received() - results;
+        println!(
+            "{name}, a vertex of Q dragged for 2 s at 60 frames a second: {:.1} results a second shown, frames \
+             median {:.2} ms, longest {:.2} ms",
+            results as f64 / 2.0,
+            median(frames.clone()),
+            frames.iter().copied().fold(0.0, f64::max),
+        );
     }
+}
+
+/// Frames at 60 a second (sleeping out the rest of each 1/60 s) for as long as `go_on(app, frame number)` says, at
+/// most a minute; returns the milliseconds it took and each frame's time.
+fn paced_frames(
+    ctx: &egui::Context,
+    app: &mut Playground,
+    time: &mut f64,
+    mut go_on: impl FnMut(&mut Playground, usize) -> bool,
+) -> (f64, Vec<f64>) {
+    let start = Instant::now();
+    let mut frames = Vec::new();
+    while go_on(app, frames.len()) && start.elapsed().as_secs() < 60 {
+        let took = frame(ctx, app, time, vec![]);
+        frames.push(took);
+        std::thread::sleep(Duration::from_secs_f64((1.0 / 60.0 - took / 1e3).max(0.0)));
+    }
+    (start.elapsed().as_secs_f64() * 1e3, frames)
 }
 
 /// Loads `polygon_grid(n)` as P and Q, in view.

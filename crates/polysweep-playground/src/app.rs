@@ -87,6 +87,9 @@ pub struct Playground {
     paste_text: Option<String>,
     /// The graphics API wgpu draws with ("WebGPU", "WebGL2", "Vulkan"…), once eframe has chosen it.
     pub renderer: Option<&'static str>,
+    /// In the browser, the worker script results are computed in (background.rs); natively they are computed on
+    /// a thread.
+    pub worker_url: Option<String>,
     #[cfg(not(target_arch = "wasm32"))]
     path: String,
 }
@@ -109,6 +112,7 @@ impl Default for Playground {
             status: None,
             paste_text: None,
             renderer: None,
+            worker_url: None,
             #[cfg(not(target_arch = "wasm32"))]
             path: String::new(),
         };
@@ -159,6 +163,21 @@ impl Playground {
         self.drawing.clear();
         self.fit_pending = true;
         self.status = Some((format!("{} loaded", preset.label()), false));
+    }
+
+    /// Loads the preset of that name in links (`land-8`), or says there is none.
+    pub fn load_preset_named(&mut self, name: &str) {
+        match Preset::named(name) {
+            Some(preset) => self.load_preset(preset),
+            None => {
+                let names: Vec<_> = Preset::ALL.iter().map(|p| p.name()).collect();
+                let known = names.join(", ");
+                self.status = Some((
+                    format!("No preset is named {name:?}; there are {known}."),
+                    true,
+                ));
+            }
+        }
     }
 
     /// Adds a vertex to the ring or line being drawn, or closes the ring when `at` is on its first vertex (a line

@@ -57,6 +57,15 @@ impl Fill {
         Fill(Arc::new(fill))
     }
 
+    /// A fill of triangles made elsewhere (in a worker, background.rs), with an id of this thread's.
+    pub fn from_triangles(points: Vec<Point>, triangles: Vec<u32>) -> Fill {
+        Fill(Arc::new(Triangles {
+            id: next_id(),
+            points,
+            triangles,
+        }))
+    }
+
     pub fn id(&self) -> u64 {
         self.0.id
     }

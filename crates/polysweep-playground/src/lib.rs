@@ -3,17 +3,22 @@
 //!
 //! The editing model ([`scene`]), camera ([`view`]), operations ([`operation`]) and fill ([`fill`]) hold no UI
 //! state and are tested natively; [`app`] is the egui front end, which draws the fills through its own wgpu
-//! pipeline ([`gpu`], with the WGSL of `fill.wgsl`); [`io`] is the only part that differs between the browser and a
-//! native window.
+//! pipeline ([`gpu`], with the WGSL of `fill.wgsl`) and has what takes time computed as [`job`]s in the
+//! [`background`] (a thread natively, a Web Worker in the browser, the jobs crossing to it as numbers); [`io`] and
+//! the background are the parts that differ between the browser and a native window.
 
 pub mod app;
+pub mod background;
 pub mod fill;
 pub mod gpu;
 pub mod io;
+pub mod job;
 pub mod operation;
 pub mod presets;
 pub mod scene;
 pub mod view;
+#[cfg(any(target_arch = "wasm32", test))]
+mod wire;
 
 pub use app::Playground;
 
@@ -38,15 +43,51 @@ mod web {
             }
         }
 
-        pub async fn start(&self, canvas: web_sys::HtmlCanvasElement) -> Result<(), JsValue> {
+        /// Starts the playground on `canvas`, computing results in a worker running the script at `worker_url`
+        /// (`worker.js`, beside this module), or on the page without one; with the preset of that name loaded
+        /// (`?preset=land-8` in the page's address), if one is given.
+        pub async fn start(
+            &self,
+            canvas: web_sys::HtmlCanvasElement,
+            worker_url: Option<String>,
+            preset: Option<String>,
+        ) -> Result<(), JsValue> {
             let options = eframe::WebOptions::default();
-            self.runner
-                .start(
-                    canvas,
-                    options,
-                    Box::new(|cc| Ok(Box::new(crate::Playground::new(cc)))),
-                )
-                .await
+            let app = move |cc: &eframe::CreationContext<'_>| {
+                let mut playground = crate::Playground::new(cc);
+                playground.worker_url = worker_url;
+                if let Some(name) = preset {
+                    playground.load_preset_named(&name);
+                }
+                Ok(Box::new(playground) as Box<dyn eframe::App>)
+            };
+            self.runner.start(canvas, options, Box::new(app)).await
+        }
+
+        /// Whether a result is being computed (the canvas shows the previous one meanwhile).
+        pub fn pending(&self) -> bool {
+            (self.runner.app_mut::<crate::Playground>()).is_some_and(|app| app.pending())
+        }
+
+        /// Frames drawn, frames drawn while a result was pending, results of the operation received, 1 if they
+        /// are computed in the worker (0 on the page), and the milliseconds the shown result's operation took, for
+        /// the browser test.
+        pub fn counters(&self) -> Vec<f64> {
+            let Some(app) = self.runner.app_mut::<crate::Playground>() else {
+                return vec![0.0; 5];
+            };
+            let (frames, pending) = app.frames();
+            let in_worker = f64::from(u8::from(app.computes_off_thread()));
+            let shown = app.shown().and_then(|c| c.outcome.as_ref().ok());
+            let milliseconds = shown.map_or(f64::NAN, |o| o.milliseconds);
+            let results = app.results_received() as f64;
+            vec![
+                frames as f64,
+                pending as f64,
+                results,
+                in_worker,
+                milliseconds,
+            ]
         }
 
         /// The graphics API the playground draws with: "WebGPU" or "WebGL2" (undefined before it has started).

@@ -1,7 +1,7 @@
 //! The five operations the playground offers, run on the core as it is (no wasm, no JS in between), with the
 //! figures the side panel shows; and the drawn lines against the result: clipped by it, and cutting it into pieces.
 
-use crate::scene::{Operand, Scene};
+use crate::scene::Operand;
 use polysweep::{clip, overlay_with_stats, split, ClipOptions, Error, FillRule, Keep};
 use polysweep::{LineString, MultiPolygon, Operation, Options, Polygon};
 use web_time::Instant;
@@ -54,13 +54,9 @@ pub struct Outcome {
     pub milliseconds: f64,
 }
 
-/// Runs `op` on the scene's operands. Errors name the operand as the user sees it (P is 0, Q is 1), also for Q − P,
+/// Runs `op` on the operands P and Q. Errors name the operand as the user sees it (P is 0, Q is 1), also for Q − P,
 /// which the core computes with the operands swapped.
-pub fn run(op: Op, scene: &Scene, fill_rule: FillRule) -> Result<Outcome, Error> {
-    let (p, q) = (
-        scene.operand(Operand::Subject),
-        scene.operand(Operand::Clipping),
-    );
+pub fn run(op: Op, [p, q]: [&MultiPolygon; 2], fill_rule: FillRule) -> Result<Outcome, Error> {
     let options = Options::default().with_fill_rule(fill_rule);
     let start = Instant::now();
     let computed = match op {
@@ -80,9 +76,13 @@ pub fn run(op: Op, scene: &Scene, fill_rule: FillRule) -> Result<Outcome, Error>
     })
 }
 
-/// The region one operand covers under the fill rule: what its fill shows.
-pub fn region(scene: &Scene, which: Operand, fill_rule: FillRule) -> Result<MultiPolygon, Error> {
-    let operand = scene.operand(which);
+/// The region an operand covers under the fill rule: what its fill shows. `which` says which operand it is, so
+/// that errors name it.
+pub fn region(
+    operand: &MultiPolygon,
+    which: Operand,
+    fill_rule: FillRule,
+) -> Result<MultiPolygon, Error> {
     let empty = MultiPolygon::default();
     let options = Options::default().with_fill_rule(fill_rule);
     match which {

@@ -36,6 +36,20 @@ impl Preset {
         }
     }
 
+    /// Its name in links to the playground (`?preset=fig3`, `?preset=land-8`).
+    pub fn name(self) -> String {
+        match self {
+            Preset::Fig3 => "fig3".into(),
+            Preset::Fig2 => "fig2".into(),
+            Preset::Fig11 => "fig11".into(),
+            Preset::Table1 { squares } => format!("land-{squares}"),
+        }
+    }
+
+    pub fn named(name: &str) -> Option<Preset> {
+        Preset::ALL.into_iter().find(|p| p.name() == name)
+    }
+
     /// The subject and clipping operands.
     pub fn operands(self) -> (MultiPolygon, MultiPolygon) {
         match self {
@@ -95,6 +109,8 @@ mod tests {
                 }
                 _ => {}
             }
+            assert_eq!(Preset::named(&preset.name()), Some(preset));
         }
+        assert_eq!(Preset::named("land-9"), None);
     }
 }

@@ -236,10 +236,12 @@ impl Scene {
         self.ring(id)?.get(id.vertex).copied()
     }
 
-    /// Moves a vertex (within the current undo step).
+    /// Moves a vertex (within the current undo step). Moving it where it is changes nothing, so that a drag held
+    /// still asks for no new result.
     pub fn move_vertex(&mut self, id: VertexId, to: Point) {
         if let Some(p) = ring_mut(&mut self.state.operands[id.operand.index()], id)
             .and_then(|r| r.get_mut(id.vertex))
+            .filter(|p| **p != to)
         {
             *p = to;
             self.revisions[id.operand.index()] += 1;
@@ -384,13 +386,14 @@ impl Scene {
         self.state.lines.get(id.line)?.get(id.vertex).copied()
     }
 
-    /// Moves a vertex of a line (within the current undo step).
+    /// Moves a vertex of a line (within the current undo step), if it is not there already.
     pub fn move_line_vertex(&mut self, id: LineVertex, to: Point) {
         if let Some(p) = self
             .state
             .lines
             .get_mut(id.line)
             .and_then(|l| l.get_mut(id.vertex))
+            .filter(|p| **p != to)
         {
             *p = to;
             self.lines_revision += 1;

@@ -118,19 +118,33 @@ fn deleting_vertices_shrinks_then_removes_rings() {
         1,
         "a ring drawn inside P is a hole of it"
     );
-    let region = operation::region(&app.scene, Operand::Subject, FillRule::EvenOdd).unwrap();
+    let region = operation::region(
+        app.scene.operand(Operand::Subject),
+        Operand::Subject,
+        FillRule::EvenOdd,
+    )
+    .unwrap();
     assert_eq!(region.area(), 16.0 - 2.0);
     // Drawn counter-clockwise like its shell, the hole was turned around: it is a hole under non-zero too.
-    let non_zero = operation::region(&app.scene, Operand::Subject, FillRule::NonZero).unwrap();
+    let non_zero = operation::region(
+        app.scene.operand(Operand::Subject),
+        Operand::Subject,
+        FillRule::NonZero,
+    )
+    .unwrap();
     assert_eq!(non_zero.area(), 16.0 - 2.0);
 
     let vertex = |ring, vertex| vertex_of(Operand::Subject, ring, vertex);
     app.scene.delete_vertex(vertex(0, 3));
     assert_eq!(app.scene.operand(Operand::Subject).0[0].exterior.len(), 3);
     assert_eq!(
-        operation::region(&app.scene, Operand::Subject, FillRule::EvenOdd)
-            .unwrap()
-            .area(),
+        operation::region(
+            app.scene.operand(Operand::Subject),
+            Operand::Subject,
+            FillRule::EvenOdd
+        )
+        .unwrap()
+        .area(),
         8.0 - 2.0
     );
     app.scene.delete_vertex(vertex(1, 0));
@@ -308,6 +322,13 @@ fn an_edit_invalidates_only_what_derives_from_its_operand() {
     assert!(
         moved[0] != before[0] && moved[1] == before[1],
         "moving a vertex of P leaves Q's fill alone"
+    );
+    app.scene
+        .move_vertex(vertex_of(Operand::Subject, 0, 2), p(5.0, 5.0));
+    assert_eq!(
+        revisions(&app),
+        moved,
+        "a drag held still asks for nothing new"
     );
     app.scene.undo();
     assert!(revisions(&app)[0] != moved[0] && revisions(&app)[1] == before[1]);

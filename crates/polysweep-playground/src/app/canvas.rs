@@ -46,15 +46,17 @@ impl Playground {
             }
         }
         self.interact(ui, &response);
-        let settled =
-            self.drag.is_none() || ui.input(|i| i.pointer.time_since_last_movement() > 0.15);
-        let up_to_date = self.refresh(settled);
-        if !up_to_date {
-            ui.ctx()
-                .request_repaint_after(std::time::Duration::from_millis(160));
+        let pending = self.derive_in_background(ui.ctx());
+        if pending {
+            // Keep drawing at the display's rate while a result is computed: the pending sign animates.
+            ui.ctx().request_repaint();
         }
         // The operation's errors name an operand's vertex; the cut's (the result being valid) a line's.
-        let error_vertex = match (&self.derived.outcome, &self.derived.cut) {
+        let computed = self.derived.computed.as_ref();
+        let error_vertex = match (
+            computed.map(|c| &c.outcome),
+            computed.and_then(|c| c.cut.as_ref()),
+        ) {
             (Some(Err(e)), _) => e
                 .location()
                 .and_then(|at| VertexId::from_location(&self.scene, &at))
@@ -80,19 +82,19 @@ impl Playground {
             .map(|(fill, colour)| Layer::Fill(fill, colour))
             .collect();
         let result_edge = Stroke::new(1.0, RESULT_EDGE);
-        match (&derived.cut, &derived.outcome) {
-            (Some(Ok(_)), _) => {
+        match derived.computed.as_ref().map(|c| (c, &c.cut, &c.outcome)) {
+            Some((computed, Some(Ok(_)), _)) => {
                 let colours = PIECE_FILLS.iter().copied().cycle();
                 layers.extend(
-                    (derived.piece_fills.iter().cloned())
+                    (computed.piece_fills.iter().cloned())
                         .zip(colours)
                         .map(|(fill, colour)| Layer::Fill(fill, colour)),
                 );
-                layers.push(Layer::Outline(derived.piece_outline.clone(), result_edge));
+                layers.push(Layer::Outline(computed.piece_outline.clone(), result_edge));
             }
-            (_, Some(Ok(_))) => {
-                layers.push(Layer::Fill(derived.result_fill.clone(), RESULT_FILL));
-                layers.push(Layer::Outline(derived.result_outline.clone(), result_edge));
+            Some((computed, _, Ok(_))) => {
+                layers.push(Layer::Fill(computed.fill.clone(), RESULT_FILL));
+                layers.push(Layer::Outline(computed.outline.clone(), result_edge));
             }
             _ => {}
         }
@@ -138,8 +140,9 @@ impl Playground {
         if let Some(p) = error_vertex.and_then(|id| id.point(&self.scene)) {
             painter.circle_stroke(to_screen(p), 10.0, Stroke::new(3.0, Color32::RED));
         }
-        if !up_to_date {
-            let text = "large data: the result follows when the pointer rests";
+        if pending {
+            let dots = ".".repeat(1 + (ui.input(|i| i.time) * 3.0) as usize % 3);
+            let text = format!("computing the result{dots}");
             painter.text(
                 canvas.left_top() + egui::vec2(8.0, 6.0),
                 egui::Align2::LEFT_TOP,
@@ -180,7 +183,7 @@ impl Playground {
     fn paint_lines(&self, painter: &egui::Painter, to_screen: impl Fn(Point) -> Pos2) {
         let on_screen = |line: &[Point]| line.iter().map(|p| to_screen(*p)).collect::<Vec<_>>();
         let outside = Stroke::new(1.5, LINE_OUTSIDE);
-        match &self.derived.cut {
+        match self.derived.computed.as_ref().and_then(|c| c.cut.as_ref()) {
             Some(Ok(cut)) => {
                 for part in &cut.outside {
                     painter.extend(Shape::dashed_line(&on_screen(part), outside, 6.0, 4.0));

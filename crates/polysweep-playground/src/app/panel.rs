@@ -3,6 +3,7 @@
 //! is pasted into.
 
 use super::{Playground, Tool, ERROR_TEXT, LINE_INSIDE, OPERAND_EDGE};
+use crate::fill::Fill;
 use crate::operation::Op;
 use crate::presets::Preset;
 use crate::scene::Operand;
@@ -188,22 +189,19 @@ impl Playground {
             "vertices in P / Q",
             format!("{} / {}", vertices[0], vertices[1]),
         )];
-        match &self.derived.outcome {
+        let computed = self.derived.computed.as_ref();
+        match computed.map(|c| &c.outcome) {
             Some(Ok(o)) => rows.extend([
                 ("vertices out", o.result.vertex_count().to_string()),
                 ("polygons out", o.result.0.len().to_string()),
                 ("edge intersections", o.crossings.to_string()),
                 ("result area", format!("{:.6}", o.result.area())),
                 ("operation time", format!("{:.2} ms", o.milliseconds)),
-                (
-                    "fill triangles",
-                    self.derived.result_fill.triangle_count().to_string(),
-                ),
             ]),
             Some(Err(e)) => rows.push(("error", e.to_string())),
             None => {}
         }
-        match &self.derived.cut {
+        match computed.and_then(|c| c.cut.as_ref()) {
             Some(Ok(cut)) => rows.extend([
                 ("lines", self.scene.lines().len().to_string()),
                 ("pieces", cut.pieces.len().to_string()),
@@ -215,12 +213,23 @@ impl Playground {
             Some(Err(e)) => rows.push(("error", e.to_string())),
             None => {}
         }
+        if let Some(c) = computed {
+            let triangles = (c.piece_fills.iter().chain([&c.fill])).map(Fill::triangle_count);
+            rows.push(("fill triangles", triangles.sum::<usize>().to_string()));
+        }
         rows.push((
             "last frame",
             format!("{:.1} ms", ui.input(|i| i.unstable_dt) * 1e3),
         ));
         if let Some(renderer) = self.renderer {
             rows.push(("renderer", renderer.to_string()));
+        }
+        if self.pending() {
+            // The figures and the canvas show the last result until the one being computed arrives.
+            ui.horizontal(|ui| {
+                ui.spinner();
+                ui.label("computing the result…");
+            });
         }
         egui::Grid::new("figures")
             .num_columns(2)
