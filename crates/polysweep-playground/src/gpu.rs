@@ -11,8 +11,13 @@
 //! The shaders are in fill.wgsl; `tests::shaders_pass_naga` validates them with naga, as wgpu does before it
 //! compiles them, so that a broken shader fails the native tests (CI has no GPU).
 //!
-//! Precision: positions are stored as f32 relative to their layer's centre, and the view's offset is worked out in
-//! f64; deep zooms far from a layer's centre lose the f32 positions' last bits (about 1e-7 of the layer's extent).
+//! Precision: positions are stored as f32 relative to an origin, the view's centre when they were uploaded, and the
+//! view's offset from it is worked out in f64. f32 keeps an eighth of a pixel within two million pixels of the
+//! origin, so a layer is uploaded again about the view's new centre when the view has moved further than that
+//! (only at deep zoom: the whole world is a few thousand pixels wide at the usual zooms).
+//!
+//! Anti-aliasing: natively the pass is multisampled ([`MSAA_SAMPLES`], main.rs asks eframe for it); eframe's web
+//! painter offers no MSAA, so there outlines fade out across their outermost pixel (fill.wgsl) as egui feathers.
 
 use crate::fill::{Fill, Outline};
 use crate::view::View;
@@ -26,6 +31,14 @@ use wgpu::util::DeviceExt;
 
 /// The WGSL of both pipelines.
 pub const SHADER: &str = include_str!("fill.wgsl");
+
+/// Samples per pixel of eframe's render pass, which the pipelines must match: 4 natively, where main.rs asks
+/// eframe for them; 1 in the browser, where eframe has no multisampling.
+pub const MSAA_SAMPLES: u32 = if cfg!(target_arch = "wasm32") { 1 } else { 4 };
+
+/// How far, in pixels, the view may move from a layer's origin before the layer is uploaded again about the view's
+/// centre: f32's 24 bits then still place every point within an eighth of a pixel.
+const REBASE_PIXELS: f64 = (1u32 << 21) as f64;
 
 /// The GPU side: the pipelines, the uploaded layers by id, and a uniform per layer drawn in the frame.
 pub struct FillPipeline {
@@ -99,9 +112,12 @@ impl FillPipeline {
                     })],
                 },
                 primitive: wgpu::PrimitiveState::default(),
-                // egui's render pass has no depth or stencil buffer and one sample (eframe's defaults).
+                // egui's render pass has no depth or stencil buffer (eframe's defaults).
                 depth_stencil: None,
-                multisample: wgpu::MultisampleState::default(),
+                multisample: wgpu::MultisampleState {
+                    count: MSAA_SAMPLES,
+                    ..Default::default()
+                },
                 fragment: Some(wgpu::FragmentState {
                     module: &module,
                     entry_point: Some(fragment),
@@ -140,15 +156,19 @@ impl FillPipeline {
             });
     }
 
-    /// Uploads the layers not on the GPU yet, forgets those no longer drawn, and writes each layer's placement.
+    /// Uploads the layers not on the GPU yet (and those the view has moved too far from, see [`REBASE_PIXELS`]),
+    /// forgets those no longer drawn, and writes each layer's placement.
     fn prepare(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, polygons: &Polygons) {
-        let layers = &polygons.layers;
+        let (layers, view) = (&polygons.layers, &polygons.view);
         self.uploaded
             .retain(|id, _| layers.iter().any(|layer| layer.id() == *id));
         for layer in layers {
-            if let Entry::Vacant(entry) = self.uploaded.entry(layer.id()) {
-                if let Some(uploaded) = upload(device, layer) {
-                    entry.insert(uploaded);
+            match self.uploaded.entry(layer.id()) {
+                Entry::Occupied(entry) if !too_far(view, entry.get().origin) => {}
+                entry => {
+                    if let Some(uploaded) = upload(device, layer, view.center) {
+                        entry.insert_entry(uploaded);
+                    }
                 }
             }
         }
@@ -192,9 +212,17 @@ impl FillPipeline {
     }
 }
 
-/// A layer's points on the GPU, as f32 positions relative to the centre of their bounding box: a fill's vertices
-/// and triangles, or an outline's edges. `None` for an empty layer (wgpu has no empty buffers).
-fn upload(device: &wgpu::Device, layer: &Layer) -> Option<Uploaded> {
+/// Whether the view has moved so far from `origin` that positions relative to it lose precision on screen.
+fn too_far(view: &View, origin: Point) -> bool {
+    let apart = (view.center.x - origin.x)
+        .abs()
+        .max((view.center.y - origin.y).abs());
+    apart * view.scale > REBASE_PIXELS
+}
+
+/// A layer's points on the GPU, as f32 positions relative to `origin`: a fill's vertices and triangles, or an
+/// outline's edges. `None` for an empty layer (wgpu has no empty buffers).
+fn upload(device: &wgpu::Device, layer: &Layer, origin: Point) -> Option<Uploaded> {
     let points: &[Point] = match layer {
         Layer::Fill(fill, _) => fill.points(),
         Layer::Outline(outline, _) => outline.segments().as_flattened(),
@@ -202,19 +230,6 @@ fn upload(device: &wgpu::Device, layer: &Layer) -> Option<Uploaded> {
     if points.is_empty() || matches!(layer, Layer::Fill(fill, _) if fill.triangle_count() == 0) {
         return None;
     }
-    let (lo, hi) = points.iter().fold(
-        (
-            Point::new(f64::INFINITY, f64::INFINITY),
-            Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
-        ),
-        |(lo, hi), p| {
-            (
-                Point::new(lo.x.min(p.x), lo.y.min(p.y)),
-                Point::new(hi.x.max(p.x), hi.y.max(p.y)),
-            )
-        },
-    );
-    let origin = Point::new((lo.x + hi.x) / 2.0, (lo.y + hi.y) / 2.0);
     let positions: Vec<f32> = (points.iter())
         .flat_map(|p| [(p.x - origin.x) as f32, (p.y - origin.y) as f32])
         .collect();
@@ -369,6 +384,58 @@ mod tests {
         );
     }
 
+    /// Where the shaders put world point `p`, uploaded relative to `origin`, in the canvas's pixels (f32 as on the
+    /// GPU).
+    fn placed(view: &View, canvas: Rect, origin: Point, p: Point) -> Pos2 {
+        let [scale, offset] = clip_transform(view, canvas, origin);
+        let clip = [
+            (p.x - origin.x) as f32 * scale[0] + offset[0],
+            (p.y - origin.y) as f32 * scale[1] + offset[1],
+        ];
+        // Clip space to the canvas's pixels: x from the left edge, y down from the top.
+        Pos2::new(
+            canvas.left() + (clip[0] + 1.0) / 2.0 * canvas.width(),
+            canvas.top() + (1.0 - clip[1]) / 2.0 * canvas.height(),
+        )
+    }
+
+    #[test]
+    fn deep_zoom_far_from_the_first_origin_uploads_again_and_stays_exact() {
+        // A billion pixels a degree, at a coastline near the antimeridian; the layer was first uploaded about
+        // (0, 0), where the view was when the whole world showed.
+        let view = View {
+            center: Point::new(179.123_456_789, 60.987_654_321),
+            scale: 1e9,
+        };
+        let canvas = Rect::from_min_max(pos2(0.0, 0.0), pos2(1200.0, 800.0));
+        let first = Point::new(0.0, 0.0);
+        assert!(
+            !too_far(&View { scale: 3.0, ..view }, first),
+            "the world view keeps it"
+        );
+        assert!(too_far(&view, first));
+        let p = Point::new(view.center.x + 2.5e-7, view.center.y - 1.25e-7);
+        let expected = view.to_screen(canvas, p);
+        let error = |origin| (placed(&view, canvas, origin, p) - expected).length();
+        assert!(
+            error(first) > 100.0,
+            "f32 about (0, 0) misplaces it: {}",
+            error(first)
+        );
+        assert!(error(view.center) < 0.125, "{}", error(view.center));
+        // Panning up to the limit from the new origin keeps the error within an eighth of a pixel.
+        let step = (REBASE_PIXELS - 600.0) / view.scale;
+        let panned = View {
+            center: Point::new(view.center.x + step, view.center.y - step),
+            ..view
+        };
+        assert!(!too_far(&panned, view.center));
+        let q = Point::new(panned.center.x - 3e-7, panned.center.y + 2e-7);
+        let error =
+            (placed(&panned, canvas, view.center, q) - panned.to_screen(canvas, q)).length();
+        assert!(error < 0.125, "{error}");
+    }
+
     #[test]
     fn the_clip_transform_places_points_where_the_view_does() {
         let view = View {
@@ -377,21 +444,12 @@ mod tests {
         };
         let canvas = Rect::from_min_max(pos2(100.0, 50.0), pos2(900.0, 650.0));
         let origin = Point::new(1003.0, -42.0);
-        let [scale, offset] = clip_transform(&view, canvas, origin);
         for p in [
             Point::new(1000.25, -40.5),
             Point::new(1010.0, -30.0),
             Point::new(990.5, -45.25),
         ] {
-            let clip = [
-                (p.x - origin.x) as f32 * scale[0] + offset[0],
-                (p.y - origin.y) as f32 * scale[1] + offset[1],
-            ];
-            // Clip space to the canvas's pixels: x from the left edge, y down from the top.
-            let screen = Pos2::new(
-                canvas.left() + (clip[0] + 1.0) / 2.0 * canvas.width(),
-                canvas.top() + (1.0 - clip[1]) / 2.0 * canvas.height(),
-            );
+            let screen = placed(&view, canvas, origin, p);
             let expected = view.to_screen(canvas, p);
             assert!(
                 (screen - expected).length() < 1e-3,

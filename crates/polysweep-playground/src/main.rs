@@ -4,6 +4,8 @@
 fn main() -> eframe::Result {
     let options = eframe::NativeOptions {
         viewport: eframe::egui::ViewportBuilder::default().with_inner_size([1200.0, 800.0]),
+        // The polygon pipelines (gpu.rs) are built for this many samples.
+        multisampling: polysweep_playground::gpu::MSAA_SAMPLES as u16,
         ..Default::default()
     };
     eframe::run_native(
