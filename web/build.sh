@@ -10,7 +10,7 @@ wasm-bindgen --target web --out-dir pkg --out-name polysweep_wasm \
 # binaryen 132 from npm: the only wasm-opt that reads current rustc output here.
 node_modules/.bin/wasm-opt -O3 --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
   --enable-mutable-globals pkg/polysweep_wasm_bg.wasm -o pkg/polysweep_wasm_bg.wasm
-cp web/src/{api,geojson,lines,layers,layer-clip,antimeridian,polysweep,polysweep.node,worker,worker-script}.js web/src/{polysweep,worker}.d.ts pkg/
+cp web/src/{api,geojson,lines,layers,layer-clip,antimeridian,trace,polysweep,polysweep.node,worker,worker-script}.js web/src/{polysweep,worker}.d.ts pkg/
 # The CommonJS entry, for require(): web/src/polysweep.require.js says why it is made this way. esbuild bundles it
 # with pkg/'s api.js and glue (it reads the entry from stdin, so that its imports resolve in pkg/) into one CommonJS
 # file; `import.meta.url`, which the glue's asynchronous init uses (tree-shaken here), becomes the file's own URL, as

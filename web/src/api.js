@@ -68,3 +68,4 @@ export function overlayFlat(operation, operands, options) {
 export { clip, split } from './lines.js';
 export { clipLayer, dissolve, overlayLayers } from './layers.js';
 export { splitAntimeridian } from './antimeridian.js';
+export { trace } from './trace.js';

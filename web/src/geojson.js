@@ -227,15 +227,15 @@ export function concatenate(operands) {
 }
 
 /**
- * Calls the wasm core; its errors (bad coordinates) become RangeErrors with the core's message. The core numbers
+ * Calls the wasm core (`overlay_flat`, or another function of the same arguments: `trace_flat`); its errors (bad coordinates) become RangeErrors with the core's message. The core numbers
  * an operand's polygons straight through; `labels` (per operand, from toFlat) turn its "operand o, polygon p" (the
  * Location format of crates/polysweep/src/error.rs) into the member and polygon of the caller's input, such as
  * "operand 1, feature 3, polygon 0".
  */
-export function run(operation, fillRule, operands, labels) {
+export function run(operation, fillRule, operands, labels, core = overlay_flat) {
   const flat = concatenate(operands);
   try {
-    return overlay_flat(operation, fillRule, flat.coords, flat.ringOffsets, flat.polygonOffsets, flat.operandOffsets);
+    return core(operation, fillRule, flat.coords, flat.ringOffsets, flat.polygonOffsets, flat.operandOffsets);
   } catch (error) {
     let message = error?.message ?? String(error);
     const at = /^operand (\d+), polygon (\d+), /.exec(message);

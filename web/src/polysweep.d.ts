@@ -209,3 +209,33 @@ export function clipLayer<P>(layer: Layer<P>, polygon: Operand, options?: ClipLa
  * pieces within [-180, 180], in the kind of `geom`; a ring that goes round a pole is closed over it.
  */
 export function splitAntimeridian<G extends Operand>(geom: G, options?: Options): Result<G>;
+
+/** An edge of a trace: endpoints in sweep order, the operand of its input edge, its winding per operand. */
+export interface TraceEdge {
+  left: Position;
+  right: Position;
+  operand: 0 | 1;
+  winding: [number, number];
+}
+
+/** One step of the sweep (see `trace`). */
+export type TraceStep =
+  | { type: 'event'; point: Position; left: boolean; edge: TraceEdge }
+  | { type: 'meeting'; lower: TraceEdge; upper: TraceEdge; meeting: 'crossing' | 'vertex-on-edge' | 'overlap'; at: Position }
+  | { type: 'subdivision'; edge: TraceEdge; at: Position }
+  | { type: 'flags'; edge: TraceEdge; coverageBelow: [number, number]; inOut: boolean; insideOther: boolean; inResult: boolean }
+  | {
+      type: 'selection';
+      edge: TraceEdge;
+      inResult: boolean;
+      reason: 'inside-other' | 'outside-other' | 'same-transition' | 'different-transition' | 'no-transition';
+    }
+  | { type: 'status'; edges: TraceEdge[] }
+  | { type: 'ring'; polygon: number; ring: number; points: Position[] };
+
+/**
+ * The steps of the Martínez–Rueda–Feito sweep of `operation` on `subject` and `clipping`, as the paper runs it:
+ * each event, S after it, what possibleInter found, each subdivision, the flags of Fig. 9, the selection of Fig. 10
+ * and the rings the connection step closed. For teaching-sized input: every step is kept.
+ */
+export function trace(operation: 'intersection' | 'union' | 'difference' | 'xor', subject: Operand, clipping: Operand, options?: Options): TraceStep[];

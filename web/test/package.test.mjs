@@ -60,12 +60,13 @@ const TARBALL_FILES = [
   'polysweep.node.js',
   'polysweep_wasm.js',
   'polysweep_wasm_bg.wasm',
+  'trace.js',
   'worker-script.js',
   'worker.d.ts',
   'worker.js',
 ].sort();
 /** Names every entry exports (among any others the API gains: the entries must agree on those too). */
-const API = ['clip', 'clipLayer', 'difference', 'dissolve', 'intersection', 'overlayFlat', 'overlayLayers', 'split', 'splitAntimeridian', 'union', 'xor'];
+const API = ['clip', 'clipLayer', 'difference', 'dissolve', 'intersection', 'overlayFlat', 'overlayLayers', 'split', 'splitAntimeridian', 'trace', 'union', 'xor'];
 const assertApi = (names, what) => {
   for (const name of API) assert.ok(names.includes(name), `${what} exports ${name}: ${names.join(', ')}`);
 };
@@ -328,7 +329,7 @@ test('the tarball holds exactly the package’s files, and what package.json nam
   };
   t.diagnostic(`tarball ${packed.filename}: ${kB(packed.size)} (${kB(packed.unpackedSize)} unpacked), ${files.length} files`);
   t.diagnostic(`wasm (polysweep_wasm_bg.wasm): ${sizes(['polysweep_wasm_bg.wasm'])}`);
-  const esm = ['polysweep.js', 'api.js', 'geojson.js', 'lines.js', 'layers.js', 'layer-clip.js', 'antimeridian.js', 'polysweep_wasm.js'];
+  const esm = ['polysweep.js', 'api.js', 'geojson.js', 'lines.js', 'layers.js', 'layer-clip.js', 'antimeridian.js', 'trace.js', 'polysweep_wasm.js'];
   t.diagnostic(`JS of the ES module entries (polysweep.js or .node.js, the API's modules, polysweep_wasm.js): ${sizes(esm)}`);
   t.diagnostic(`JS of the CommonJS entry (polysweep.cjs): ${sizes(['polysweep.cjs'])}`);
 });

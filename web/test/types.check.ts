@@ -175,3 +175,11 @@ async function inWorker(signal: AbortSignal) {
   return [merged, notAwaited];
 }
 void inWorker;
+
+// ---- The sweep's trace ----
+import { trace, type TraceStep } from 'polysweep';
+const steps: TraceStep[] = trace('intersection', [[[0, 0], [1, 0], [0, 1]]], [[[0, 0], [1, 1], [0, 1]]]);
+for (const step of steps) {
+  if (step.type === 'status') step.edges.forEach((edge) => edge.left[0] + edge.winding[1]);
+  if (step.type === 'selection') exactly<'inside-other' | 'outside-other' | 'same-transition' | 'different-transition' | 'no-transition', typeof step.reason>(true);
+}

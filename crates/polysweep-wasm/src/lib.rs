@@ -4,7 +4,8 @@
 
 use polysweep::{
     clip, overlay, overlay_all, overlay_layers, split, Boundary, ClipOptions, FillRule, Keep,
-    LayerMode, LineString, MultiPolygon, Operation, Options, Point, Polygon,
+    LayerMode, LineString, Meeting, MultiPolygon, Operation, Options, Point, Polygon, Reason, Step,
+    TraceEdge,
 };
 use wasm_bindgen::prelude::*;
 
@@ -86,7 +87,36 @@ pub fn overlay_flat(
     polygon_offsets: &[u32],
     operand_offsets: &[u32],
 ) -> Result<Vec<f64>, JsError> {
-    let operation = match operation {
+    let (operation, options, operands) = read_call(
+        operation,
+        fill_rule,
+        coords,
+        [ring_offsets, polygon_offsets, operand_offsets],
+    )?;
+    let result = match &operands[..] {
+        [a, b] => overlay(operation, a, b, &options),
+        _ => overlay_all(operation, &operands, &options),
+    };
+    result
+        .map(|r| pack(&r))
+        .map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The operation, options and operands of a call over flat operands (see [`operands`]).
+fn read_call(
+    operation: u8,
+    fill_rule: u8,
+    coords: &[f64],
+    [rings, polygons, operands_at]: [&[u32]; 3],
+) -> Result<(Operation, Options, Vec<MultiPolygon>), JsError> {
+    let operation = operation_of(operation)?;
+    let options = options(fill_rule)?;
+    let operands = operands(coords, rings, polygons, operands_at).map_err(|e| JsError::new(&e))?;
+    Ok((operation, options, operands))
+}
+
+fn operation_of(operation: u8) -> Result<Operation, JsError> {
+    Ok(match operation {
         0 => Operation::Intersection,
         1 => Operation::Union,
         2 => Operation::Difference,
@@ -96,17 +126,7 @@ pub fn overlay_flat(
                 "operation must be 0 (intersection), 1 (union), 2 (difference) or 3 (xor)",
             ))
         }
-    };
-    let options = options(fill_rule)?;
-    let operands = operands(coords, ring_offsets, polygon_offsets, operand_offsets)
-        .map_err(|e| JsError::new(&e))?;
-    let result = match &operands[..] {
-        [a, b] => overlay(operation, a, b, &options),
-        _ => overlay_all(operation, &operands, &options),
-    };
-    result
-        .map(|r| pack(&r))
-        .map_err(|e| JsError::new(&e.to_string()))
+    })
 }
 
 /// The options with fill rule `fill_rule` (0 even-odd, 1 non-zero, 2 positive, 3 negative, 4 structure).
@@ -303,4 +323,138 @@ mod tests {
             Some("ring 0 runs past the coordinates")
         );
     }
+}
+
+/// The steps of the sweep of `operation` on two operands in flat form (see [`polysweep::trace`]), as JSON text: an
+/// array of objects, each with a `type` ("event", "meeting", "subdivision", "flags", "selection", "status",
+/// "ring") and its fields (web/src/trace.js documents them).
+#[wasm_bindgen]
+pub fn trace_flat(
+    operation: u8,
+    fill_rule: u8,
+    coords: &[f64],
+    ring_offsets: &[u32],
+    polygon_offsets: &[u32],
+    operand_offsets: &[u32],
+) -> Result<String, JsError> {
+    let (operation, options, operands) = read_call(
+        operation,
+        fill_rule,
+        coords,
+        [ring_offsets, polygon_offsets, operand_offsets],
+    )?;
+    let [a, b] = &operands[..] else {
+        return Err(JsError::new("a trace takes two operands"));
+    };
+    let steps = polysweep::trace(operation, a, b, &options).map_err(js_error)?;
+    let mut json = String::from("[");
+    for (i, step) in steps.iter().enumerate() {
+        if i > 0 {
+            json.push(',');
+        }
+        step_json(&mut json, step);
+    }
+    json.push(']');
+    Ok(json)
+}
+
+fn step_json(out: &mut String, step: &Step) {
+    use std::fmt::Write;
+    let point = |[x, y]: [f64; 2]| format!("[{x},{y}]");
+    let edge = |e: &TraceEdge| {
+        format!(
+            r#"{{"left":{},"right":{},"operand":{},"winding":[{},{}]}}"#,
+            point(e.left),
+            point(e.right),
+            e.operand,
+            e.winding[0],
+            e.winding[1]
+        )
+    };
+    // (Writing to a String cannot fail.)
+    let _ = match step {
+        Step::Event {
+            point: at,
+            left,
+            edge: e,
+        } => write!(
+            out,
+            r#"{{"type":"event","point":{},"left":{left},"edge":{}}}"#,
+            point(*at),
+            edge(e)
+        ),
+        Step::Meeting {
+            lower,
+            upper,
+            meeting,
+            at,
+        } => {
+            let meeting = match meeting {
+                Meeting::Crossing => "crossing",
+                Meeting::VertexOnEdge => "vertex-on-edge",
+                Meeting::Overlap => "overlap",
+                _ => "other",
+            };
+            write!(
+                out,
+                r#"{{"type":"meeting","lower":{},"upper":{},"meeting":"{meeting}","at":{}}}"#,
+                edge(lower),
+                edge(upper),
+                point(*at)
+            )
+        }
+        Step::Subdivision { edge: e, at } => write!(
+            out,
+            r#"{{"type":"subdivision","edge":{},"at":{}}}"#,
+            edge(e),
+            point(*at)
+        ),
+        Step::Flags {
+            edge: e,
+            coverage_below: [c0, c1],
+            in_out,
+            inside_other,
+            in_result,
+        } => write!(
+            out,
+            r#"{{"type":"flags","edge":{},"coverageBelow":[{c0},{c1}],"inOut":{in_out},"insideOther":{inside_other},"inResult":{in_result}}}"#,
+            edge(e)
+        ),
+        Step::Selection {
+            edge: e,
+            in_result,
+            reason,
+        } => {
+            let reason = match reason {
+                Reason::InsideOther => "inside-other",
+                Reason::OutsideOther => "outside-other",
+                Reason::SameTransition => "same-transition",
+                Reason::DifferentTransition => "different-transition",
+                Reason::NoTransition => "no-transition",
+                _ => "other",
+            };
+            write!(
+                out,
+                r#"{{"type":"selection","edge":{},"inResult":{in_result},"reason":"{reason}"}}"#,
+                edge(e)
+            )
+        }
+        Step::Status(edges) => {
+            let edges: Vec<String> = edges.iter().map(edge).collect();
+            write!(out, r#"{{"type":"status","edges":[{}]}}"#, edges.join(","))
+        }
+        Step::Ring {
+            polygon,
+            ring,
+            points,
+        } => {
+            let points: Vec<String> = points.iter().copied().map(point).collect();
+            write!(
+                out,
+                r#"{{"type":"ring","polygon":{polygon},"ring":{ring},"points":[{}]}}"#,
+                points.join(",")
+            )
+        }
+        _ => write!(out, r#"{{"type":"other"}}"#),
+    };
 }

@@ -73,6 +73,7 @@ mod status;
 mod structure;
 mod subdivide;
 mod sweep;
+mod trace;
 // What every stage uses.
 mod error;
 mod exact;
@@ -118,6 +119,7 @@ pub use options::Options;
 pub use options::Shortcuts;
 pub use overlay::Stats;
 pub use select::{FillRule, Operation};
+pub use trace::{trace, trace_with_status_for, Meeting, Reason, Step, TraceEdge};
 pub use validate::{validate, RingProblem, ValidationError};
 pub use workspace::{free_working_memory, KEEP_BYTES};
 

@@ -99,6 +99,14 @@ pub(crate) enum Selection {
 }
 
 impl Selection {
+    /// The fill rule the operands are read by (a polygon set counted together is read by its winding's parity).
+    pub fn fill_rule(&self) -> FillRule {
+        match *self {
+            Selection::Pair { fill_rule, .. } => fill_rule,
+            Selection::Count { .. } | Selection::Arrangement => FillRule::EvenOdd,
+        }
+    }
+
     // (Inlined into `flags`, on the path of every edge; as a call it cost 2% of Table 1.)
     #[inline(always)]
     pub fn in_result(&self, coverage: [i32; 2]) -> bool {

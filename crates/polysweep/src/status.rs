@@ -175,6 +175,15 @@ impl<K: Copy> Status<K> {
         }
     }
 
+    /// The lowest edge's node, or `NONE` when S is empty.
+    pub fn lowest(&self) -> u32 {
+        let mut node = self.root;
+        while node != NONE && self.nodes[node as usize].children[0] != NONE {
+            node = self.nodes[node as usize].children[0];
+        }
+        node
+    }
+
     /// The neighbour below, or `NONE`.
     pub fn prev(&self, node: u32) -> u32 {
         self.nodes[node as usize].neighbours[0]

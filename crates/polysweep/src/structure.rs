@@ -34,6 +34,7 @@ use crate::options::Options;
 use crate::overlay::sweep;
 use crate::select::{FillRule, Operation, Selection};
 use crate::sweep::Sweep;
+use crate::trace::Observer;
 use crate::workspace::{self, Workspace};
 
 /// What the sweep watches for the structural reading: the rings swept, and whether each operand is read alike by
@@ -114,7 +115,7 @@ pub(crate) fn add_watched_edges(
     }
 }
 
-impl Sweep<'_> {
+impl<O: Observer> Sweep<'_, O> {
     /// The edges at nodes `a` and `b` of S meet other than at a common endpoint: that is a contact for each
     /// operand both of them carry (an edge carries those its winding counts, overlapping edges merged into it
     /// included).

@@ -22,9 +22,10 @@ use crate::edges::{EventId, NONE};
 use crate::exact::SweepPoint;
 use crate::geometry::{larger, smaller};
 use crate::sweep::Sweep;
+use crate::trace::{Meeting, Observer, Step};
 use std::cmp::Ordering::{Equal, Less};
 
-impl Sweep<'_> {
+impl<O: Observer> Sweep<'_, O> {
     /// possibleInter (Fig. 5) of two edges, given by their nodes in S, `lower` below `upper`. It reads the nodes,
     /// not the events.
     #[inline(always)]
@@ -64,6 +65,7 @@ impl Sweep<'_> {
             _ => {
                 self.watch_contact(lower, upper);
                 let x = self.exact.crossing(&l1, &l2);
+                self.trace_meeting(lower, upper, Meeting::Crossing, &x);
                 self.split_crossing(lower, upper, x);
                 return;
             }
@@ -71,8 +73,24 @@ impl Sweep<'_> {
         for node in [lower, upper] {
             if self.strictly_inside(node, &meeting) {
                 self.watch_contact(lower, upper);
+                self.trace_meeting(lower, upper, Meeting::VertexOnEdge, &meeting);
                 self.split(self.status.event(node), meeting);
             }
+        }
+    }
+
+    /// Reports what possibleInter found (see [`crate::trace`]; nothing for the operations).
+    #[inline(always)]
+    fn trace_meeting(&mut self, lower: u32, upper: u32, meeting: Meeting, at: &SweepPoint) {
+        if O::ON {
+            let [lower, upper] = [lower, upper].map(|n| self.trace_edge(self.status.event(n)));
+            let at = at.approx;
+            (self.observer).step(Step::Meeting {
+                lower,
+                upper,
+                meeting,
+                at,
+            });
         }
     }
 
@@ -86,6 +104,12 @@ impl Sweep<'_> {
             return; // they touch at an endpoint at most
         }
         self.watch_contact(lower, upper);
+        let start = if self.exact.cmp_points(&a1, &a2) == Less {
+            a2
+        } else {
+            a1
+        };
+        self.trace_meeting(lower, upper, Meeting::Overlap, &start);
         for (node, [first, last]) in [(lower, [a2, b2]), (upper, [a1, b1])] {
             // The far point first, so that the edge keeps its left part and the second split cuts that part.
             for p in [last, first] {
@@ -152,6 +176,13 @@ impl Sweep<'_> {
     /// endpoints), and a new edge goes on from there. Returns the new right event, at `p`; the new left event is the
     /// one after it.
     fn cut(&mut self, edge: EventId, p: SweepPoint) -> EventId {
+        if O::ON {
+            let step = Step::Subdivision {
+                edge: self.trace_edge(edge),
+                at: p.approx,
+            };
+            self.observer.step(step);
+        }
         let base = self.event(edge).clone();
         let right = base.other;
         let (new_right, new_left) = (

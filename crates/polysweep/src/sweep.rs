@@ -44,6 +44,7 @@ use crate::exact::{Exact, Line, SweepPoint};
 use crate::options::Shortcuts;
 use crate::select::{Flags, Selection};
 use crate::structure::Watch;
+use crate::trace::{Observer, Reason, Silent, Step, TraceEdge};
 use crate::workspace::{room, take, Workspace};
 
 mod close_calls;
@@ -69,7 +70,7 @@ pub(crate) struct InStatus {
     vertex: u32,
 }
 
-pub(crate) struct Sweep<'a> {
+pub(crate) struct Sweep<'a, O: Observer = Silent> {
     /// The input edges: what every fragment of one keeps of it (its line and operand) is read here.
     pub edges: &'a [InputEdge],
     pub events: Vec<SweepEvent>,
@@ -107,6 +108,8 @@ pub(crate) struct Sweep<'a> {
     /// For an arrangement sweep only (see [`crate::arrangement`]): which input segments lie on each edge, and every
     /// edge recorded as a fragment when it leaves S, instead of the result edges.
     pub sources: Option<Sources>,
+    /// What the steps are reported to (see [`crate::trace`]): nothing, for the operations.
+    pub observer: O,
 }
 
 impl<'a> Sweep<'a> {
@@ -119,6 +122,23 @@ impl<'a> Sweep<'a> {
         magnitude: f64,
         shortcuts: Shortcuts,
         workspace: &mut Workspace,
+    ) -> Self {
+        Sweep::observed(
+            edges, selection, stop_x, magnitude, shortcuts, workspace, Silent,
+        )
+    }
+}
+
+impl<'a, O: Observer> Sweep<'a, O> {
+    /// [`Sweep::new`], reporting its steps to `observer`.
+    pub fn observed(
+        edges: &'a [InputEdge],
+        selection: Selection,
+        stop_x: f64,
+        magnitude: f64,
+        shortcuts: Shortcuts,
+        workspace: &mut Workspace,
+        observer: O,
     ) -> Self {
         let exact = Exact::default();
         let events = initial_events(
@@ -156,6 +176,7 @@ impl<'a> Sweep<'a> {
             shortcuts,
             watch: None,
             sources: None,
+            observer,
         }
     }
 
@@ -236,12 +257,21 @@ impl<'a> Sweep<'a> {
             self.current = point;
 
             self.assign_vertex(e);
+            if O::ON {
+                let (left, edge) = (self.event(e).left(), self.trace_edge(e));
+                let point = point.approx;
+                self.observer.step(Step::Event { point, left, edge });
+            }
             if head.partner != NONE {
                 self.process_crossing(e, head.partner);
             } else if self.event(e).left() {
                 self.process_left(e);
             } else {
                 self.process_right(e);
+            }
+            if O::ON && self.observer.wants_status() {
+                let status = self.trace_status();
+                self.observer.step(Step::Status(status));
             }
         }
         match self.stopped.take() {
@@ -368,6 +398,71 @@ impl<'a> Sweep<'a> {
         self.status.key_mut(node).flags = flags;
     }
 
+    /// Reports the flags of Fig. 9 the edge at `node` got (see [`crate::trace`]).
+    #[cold]
+    fn trace_flags(&mut self, node: u32) {
+        let below = self.status.prev(node);
+        let coverage_below = match below {
+            NONE => [0; 2],
+            b => self.status.key(b).flags.coverage_above,
+        };
+        let edge = self.status.key(node);
+        let fill_rule = self.selection.fill_rule();
+        let own = edge.operand as usize;
+        let step = Step::Flags {
+            edge: self.trace_edge(edge.event),
+            coverage_below,
+            in_out: fill_rule.is_inside(coverage_below[own]),
+            inside_other: fill_rule.is_inside(coverage_below[1 - own]),
+            in_result: edge.flags.in_result,
+        };
+        self.observer.step(step);
+    }
+
+    /// Reports the selection of Fig. 10 for the edge of left event `l`, leaving S (see [`crate::trace`]).
+    #[cold]
+    fn trace_selection(&mut self, l: EventId, edge: &InStatus) {
+        let winding = self.event(l).winding;
+        let above = edge.flags.coverage_above;
+        let below = if edge.line.is_vertical() {
+            above
+        } else {
+            [above[0] - winding[0], above[1] - winding[1]]
+        };
+        let step = Step::Selection {
+            edge: self.trace_edge(l),
+            in_result: edge.flags.in_result,
+            reason: Reason::of(self.selection.fill_rule(), winding, below),
+        };
+        self.observer.step(step);
+    }
+
+    /// The edge of event `e` (left or right) as the trace shows it.
+    pub(crate) fn trace_edge(&self, e: EventId) -> TraceEdge {
+        let l = if self.event(e).left() {
+            e
+        } else {
+            self.event(e).other
+        };
+        TraceEdge {
+            left: self.point(l).approx,
+            right: self.far_point(l).approx,
+            operand: self.input_edge(l).operand as usize,
+            winding: self.event(l).winding,
+        }
+    }
+
+    /// S, bottom to top, as the trace shows it.
+    fn trace_status(&self) -> Vec<TraceEdge> {
+        let mut edges = Vec::new();
+        let mut node = self.status.lowest();
+        while node != NONE {
+            edges.push(self.trace_edge(self.status.event(node)));
+            node = self.status.next(node);
+        }
+        edges
+    }
+
     fn process_left(&mut self, e: EventId) {
         let node = match self.place_after_last_left(e) {
             Some(below) => self.status.insert_above(below, e, self.in_status(e)),
@@ -409,6 +504,9 @@ impl<'a> Sweep<'a> {
             self.note_close_calls(&p, node);
         }
         self.set_flags(node);
+        if O::ON {
+            self.trace_flags(node);
+        }
         if let Some(watch) = self.watch.as_deref() {
             if !watch.reached(self.event(e).segment()) {
                 self.watch_ring_start(e, node);
@@ -469,6 +567,9 @@ impl<'a> Sweep<'a> {
     #[inline(always)]
     fn end_edge(&mut self, l: EventId, node: u32) {
         let edge = *self.status.key(node);
+        if O::ON {
+            self.trace_selection(l, &edge);
+        }
         if edge.flags.in_result {
             let (from, to) = (edge.vertex, self.current_vertex());
             if let Some(sources) = &mut self.sources {

@@ -6,9 +6,10 @@ use super::{InStatus, Sweep};
 use crate::edges::NONE;
 use crate::exact::SweepPoint;
 use crate::geometry::larger;
+use crate::trace::Observer;
 use std::cmp::Ordering;
 
-impl Sweep<'_> {
+impl<O: Observer> Sweep<'_, O> {
     /// Rounding moves a constructed point by at most half an ulp, and an edge with such an end (even one made by a
     /// later split) by as much. So an event point can end up on the other side of a neighbouring edge only if it
     /// lies within a few ulps of it; `close_call` notes it, and the rounded result is then validated. `p`, the

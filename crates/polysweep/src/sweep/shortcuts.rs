@@ -4,9 +4,10 @@
 use super::Sweep;
 use crate::edges::{EventId, NONE};
 use crate::events::event_order;
+use crate::trace::Observer;
 use std::cmp::Ordering;
 
-impl Sweep<'_> {
+impl<O: Observer> Sweep<'_, O> {
     /// Where the edge of left event `e` goes in S, if it goes just above the edge settled last (not in the paper).
     /// Edges that start at one point come in Q from the lowest up (§4), and each belongs just above the one before,
     /// as a rule: an edge of S between them would pass through the point and have been split there. Up a grid's
