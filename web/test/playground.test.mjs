@@ -377,3 +377,61 @@ async function dragLandAndCheck(renderer) {
     await close();
   }
 }
+
+// The sweep explorer (key X) on the paper's Fig. 7 case (?preset=fig7, tests/fixtures/fig7-sweep-line.json): the
+// triangles P = (0,4) (4,0) (8,4) and Q = (0,−1) (12,−1) (6,5). Worked out by hand from §3 (the same reasoning as
+// crates/polysweep/tests/trace.rs): events 0–3 are at x = 0 — the left ends of Q's d = (0,−1)–(12,−1) and
+// e = (0,−1)–(6,5), then of P's a = (0,4)–(4,0) and c = (0,4)–(8,4); inserting a splits a and e where they cross,
+// at i = (2.5, 1.5). After event 3, S bottom to top is d, e up to i, a up to i, c. Events 4–7 are at i: the first
+// parts of e and a leave S, their second parts a′ = i–(4,0) and e′ = i–(6,5) enter, and e′ is split where it
+// crosses c, at (5, 4): S is d, a′, e′ up to (5,4), c up to (5,4). Event 8, the right end of a′ at (4, 0), selects
+// a′ into P ∩ Q (inside Q); e's first part was not selected (outside P). After the last event the connection step
+// closes the ring of P ∩ Q.
+const STATUS_COLOURS = [[255, 80, 200], [80, 220, 255], [0, 200, 140], [110, 255, 110], [255, 140, 40], [170, 130, 255]]; // explore.rs
+const fig7View = fitted([0, -1], [12, 5]);
+const EXPLORER_STEPS = [
+  // [presses of → from the previous check, [edge midpoint, colour] pairs expected, what it shows]
+  [3, [[[6, -1], STATUS_COLOURS[0]], [[1.25, 0.25], STATUS_COLOURS[1]], [[1.25, 2.75], STATUS_COLOURS[2]], [[4, 4], STATUS_COLOURS[3]]], 'S = d, e to i, a to i, c after event 3'],
+  [4, [[[6, -1], STATUS_COLOURS[0]], [[3.25, 0.75], STATUS_COLOURS[1]], [[3.75, 2.75], STATUS_COLOURS[2]], [[2.5, 4], STATUS_COLOURS[3]]], 'S = d, a′, e′ to (5,4), c to (5,4) after event 7'],
+  [1, [[[3.25, 0.75], RESULT_FILL]], 'a′ selected into P ∩ Q by event 8'],
+];
+
+test('WebGL2: the sweep explorer steps through Fig. 7 as §3 describes it', { timeout: 180_000 }, async () => {
+  const { context, close } = await launchChromium({ webgpu: false });
+  const page = await context.newPage();
+  await page.setViewportSize(VIEWPORT);
+  try {
+    await page.goto(`${origin}/index.html?preset=fig7`);
+    await page.waitForFunction(() => window.playgroundReady || window.playgroundFailure, null, { timeout: 120_000 });
+    await page.waitForTimeout(500);
+    await page.keyboard.press('KeyX');
+    for (const [presses, expected, label] of EXPLORER_STEPS) {
+      for (let i = 0; i < presses; i++) {
+        await page.keyboard.press('ArrowRight');
+        await page.waitForTimeout(150);
+      }
+      const probes = expected.map(([at, colour]) => [fig7View(at), colour]);
+      await expectScreen(
+        page,
+        (shot) => probes.every(([{ x, y }, colour]) => near(shot.at(x, y), colour, 12)),
+        (shot) => `${label}: expected ${JSON.stringify(expected)}, pixels ${JSON.stringify(probes.map(([{ x, y }]) => shot.at(x, y)))}`,
+      );
+    }
+    // e's first part, outside P, was not selected: no explorer colour there once it has left S.
+    const eFirst = fig7View([1.25, 0.25]);
+    const shot = await screenshot(page);
+    assert.ok(![RESULT_FILL, ...STATUS_COLOURS].some((c) => near(shot.at(eFirst.x, eFirst.y), c, 12)), `e's first part: ${shot.at(eFirst.x, eFirst.y)}`);
+    // After the last event the ring of P ∩ Q is closed and filled: (5, 2) is inside it, (2, 3) in P only.
+    await page.keyboard.press('End');
+    const [inside, outside] = [fig7View([5, 2]), fig7View([2, 3])];
+    await expectScreen(
+      page,
+      (s) => isResultColour(s.at(inside.x, inside.y)) && !isResultColour(s.at(outside.x, outside.y)),
+      (s) => `the closed ring: ${s.at(inside.x, inside.y)} inside, ${s.at(outside.x, outside.y)} outside`,
+    );
+    assert.equal(await page.evaluate(() => window.playgroundFailure), undefined);
+  } finally {
+    await page.close();
+    await close();
+  }
+});

@@ -6,10 +6,12 @@
 //! Enter finishes it. Drag a vertex to move it, drag elsewhere to pan, scroll or pinch to zoom. Right-click a vertex
 //! (or hover it and press Delete) to delete it. Keys: 1–5 operations, P/Q draw into that operand, L draw lines,
 //! G grid snapping, F fit, Esc drops the ring or line being drawn, Backspace its last vertex, Ctrl+Z /
-//! Ctrl+Shift+Z (or Ctrl+Y) undo and redo, Ctrl+V pastes GeoJSON into the active operand.
+//! Ctrl+Shift+Z (or Ctrl+Y) undo and redo, Ctrl+V pastes GeoJSON into the active operand, X steps through the
+//! sweep (see explore.rs for its keys).
 
 mod canvas;
 mod derived;
+mod explore;
 mod input;
 mod panel;
 
@@ -21,6 +23,7 @@ use crate::view::View;
 use derived::Derived;
 use eframe::egui::{self, Color32};
 use eframe::egui_wgpu::wgpu;
+use explore::Exploring;
 use input::Drag;
 use polysweep::{geojson, FillRule, Point};
 
@@ -81,6 +84,8 @@ pub struct Playground {
     fit_pending: bool,
     drag: Option<Drag>,
     derived: Derived,
+    /// The sweep explorer, while it is on (key X).
+    exploring: Option<Exploring>,
     files: Files,
     /// The last thing that happened that the user should know of (loads, saves, errors).
     status: Option<(String, bool)>,
@@ -108,6 +113,7 @@ impl Default for Playground {
             fit_pending: false,
             drag: None,
             derived: Derived::default(),
+            exploring: None,
             files: Files::default(),
             status: None,
             paste_text: None,
@@ -241,6 +247,10 @@ impl Playground {
             self.files.receive_dropped(ui.ctx(), file);
         }
         self.keyboard(ui);
+        self.explorer_input(ui);
+        if self.exploring.is_some() {
+            self.refresh_explorer();
+        }
         egui::Panel::left("controls")
             .resizable(false)
             .exact_size(280.0)

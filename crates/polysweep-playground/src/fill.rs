@@ -113,6 +113,11 @@ impl Outline {
             .filter(|(a, b)| a != b)
             .map(|(a, b)| [*a, *b])
             .collect();
+        Outline::of_segments(ends)
+    }
+
+    /// Segments given as their two ends.
+    pub fn of_segments(ends: Vec<[Point; 2]>) -> Outline {
         Outline(Arc::new(Segments {
             id: next_id(),
             ends,

@@ -9,6 +9,7 @@
 
 pub mod app;
 pub mod background;
+pub mod explorer;
 pub mod fill;
 pub mod gpu;
 pub mod io;

@@ -12,15 +12,19 @@ pub enum Preset {
     Fig2,
     /// Fig. 11: a self-intersecting polygon set under the even-odd rule (§7.3).
     Fig11,
+    /// Fig. 7: two triangles whose edges cross while both are in S, the walk-through of §3 (the sweep explorer's
+    /// first case).
+    Fig7,
     /// Table 1: world land (59,212 vertices) against `n` squares.
     Table1 { squares: usize },
 }
 
 impl Preset {
-    pub const ALL: [Preset; 7] = [
+    pub const ALL: [Preset; 8] = [
         Preset::Fig3,
         Preset::Fig2,
         Preset::Fig11,
+        Preset::Fig7,
         Preset::Table1 { squares: 8 },
         Preset::Table1 { squares: 162 },
         Preset::Table1 { squares: 974 },
@@ -32,6 +36,7 @@ impl Preset {
             Preset::Fig3 => "Fig. 3: concave polygons".into(),
             Preset::Fig2 => "Fig. 2: vertex on an edge".into(),
             Preset::Fig11 => "Fig. 11: self-intersecting set".into(),
+            Preset::Fig7 => "Fig. 7: the sweep line (explore it: X)".into(),
             Preset::Table1 { squares } => format!("Table 1: land × {squares} squares"),
         }
     }
@@ -42,6 +47,7 @@ impl Preset {
             Preset::Fig3 => "fig3".into(),
             Preset::Fig2 => "fig2".into(),
             Preset::Fig11 => "fig11".into(),
+            Preset::Fig7 => "fig7".into(),
             Preset::Table1 { squares } => format!("land-{squares}"),
         }
     }
@@ -62,6 +68,7 @@ impl Preset {
             Preset::Fig11 => fixture(include_str!(
                 "../../../tests/fixtures/fig11-self-intersecting-polygon-set.json"
             )),
+            Preset::Fig7 => fixture(include_str!("../../../tests/fixtures/fig7-sweep-line.json")),
             Preset::Table1 { squares } => {
                 let grid: &[u8] = match squares {
                     8 => include_bytes!("../../../tests/data/squares-8.json.gz"),

@@ -375,3 +375,38 @@ fn the_vertex_under_the_pointer_is_found_among_many_polygons_and_follows_edits()
         None
     );
 }
+
+#[test]
+fn key_x_opens_the_sweep_explorer_and_the_arrows_step_through_it() {
+    let ctx = egui::Context::default();
+    let mut app = Playground::default();
+    app.load_preset(Preset::Fig7);
+    frame(&ctx, &mut app, vec![]);
+    key(&ctx, &mut app, Key::X);
+    assert_eq!(app.explorer().map(|e| e.position()), Some(0));
+    for _ in 0..3 {
+        key(&ctx, &mut app, Key::ArrowRight);
+    }
+    let explorer = app.explorer().expect("on");
+    assert_eq!(explorer.position(), 3);
+    assert_eq!(
+        explorer.status().len(),
+        4,
+        "§3's S after p0p1 is inserted: four edges"
+    );
+    key(&ctx, &mut app, Key::ArrowLeft);
+    assert_eq!(app.explorer().unwrap().position(), 2);
+    // Editing traces again, at the same step.
+    app.scene.checkpoint();
+    let apex = VertexId {
+        operand: Operand::Clipping,
+        polygon: 0,
+        ring: 0,
+        vertex: 2,
+    };
+    app.scene.move_vertex(apex, p(6.0, 6.0));
+    frame(&ctx, &mut app, vec![]);
+    assert_eq!(app.explorer().unwrap().position(), 2);
+    key(&ctx, &mut app, Key::X);
+    assert!(app.explorer().is_none());
+}

@@ -82,7 +82,11 @@ impl Playground {
             .map(|(fill, colour)| Layer::Fill(fill, colour))
             .collect();
         let result_edge = Stroke::new(1.0, RESULT_EDGE);
-        match derived.computed.as_ref().map(|c| (c, &c.cut, &c.outcome)) {
+        let result = derived
+            .computed
+            .as_ref()
+            .filter(|_| self.exploring.is_none());
+        match result.map(|c| (c, &c.cut, &c.outcome)) {
             Some((computed, Some(Ok(_)), _)) => {
                 let colours = PIECE_FILLS.iter().copied().cycle();
                 layers.extend(
@@ -105,12 +109,14 @@ impl Playground {
             let edge = Stroke::new(1.5, OPERAND_EDGE[which.index()]);
             layers.push(Layer::Outline(outline.clone(), edge));
         }
+        self.explorer_layers(&mut layers);
         Polygons {
             layers,
             view,
             canvas,
         }
         .paint(&painter);
+        self.paint_explorer(&painter, canvas, to_screen);
         for which in [Operand::Subject, Operand::Clipping] {
             let operand = self.scene.operand(which);
             let edge = OPERAND_EDGE[which.index()];

@@ -65,6 +65,7 @@ impl Playground {
         for text in pasted {
             self.load_text("pasted text", &text);
         }
+        let mut exploring = None;
         ui.input_mut(|i| {
             let keys = [Key::Num1, Key::Num2, Key::Num3, Key::Num4, Key::Num5];
             for (key, op) in keys.into_iter().zip(Op::ALL) {
@@ -103,6 +104,9 @@ impl Playground {
             if i.consume_key(Modifiers::NONE, Key::F) {
                 self.fit_pending = true;
             }
+            if i.consume_key(Modifiers::NONE, Key::X) {
+                exploring = Some(self.exploring.is_none());
+            }
             if i.consume_key(Modifiers::NONE, Key::Enter) {
                 self.finish_drawing();
             }
@@ -113,6 +117,9 @@ impl Playground {
                 self.drawing.pop();
             }
         });
+        if let Some(on) = exploring {
+            self.set_exploring(on);
+        }
     }
 
     /// The vertex under the pointer: the nearest of a ring or a line, and on a tie the kind the tool draws.

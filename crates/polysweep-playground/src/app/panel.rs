@@ -117,6 +117,9 @@ impl Playground {
         }
         ui.separator();
 
+        self.explorer_controls(ui);
+        ui.separator();
+
         self.data_controls(ui);
         ui.separator();
         self.figures(ui);
