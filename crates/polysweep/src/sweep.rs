@@ -384,18 +384,9 @@ impl<'a, O: Observer> Sweep<'a, O> {
     }
 
     /// Fig. 9: the flags of the edge at `node` in S, from the edge below it.
+    #[inline(always)]
     pub fn set_flags(&mut self, node: u32) {
-        let below = match self.status.prev(node) {
-            NONE => None,
-            b => Some(self.status.key(b)),
-        };
-        let edge = self.status.key(node);
-        let flags = self.selection.flags(
-            self.event(edge.event).winding,
-            edge.line.is_vertical(),
-            below.map(|b| (b.event, &b.flags, b.line.is_vertical())),
-        );
-        self.status.key_mut(node).flags = flags;
+        set_flags(&mut self.status, &self.selection, &self.events, node);
     }
 
     /// Reports the flags of Fig. 9 the edge at `node` got (see [`crate::trace`]).
@@ -592,6 +583,28 @@ impl<'a, O: Observer> Sweep<'a, O> {
             self.events[l as usize].leave_status();
         }
     }
+}
+
+/// [`Sweep::set_flags`], outside the sweep's impl: as a method of the sweep, generic over its observer, LLVM laid it
+/// out with 7% more instructions (Table 1's callgrind counts).
+#[inline(never)]
+fn set_flags(
+    status: &mut crate::status::Status<InStatus>,
+    selection: &Selection,
+    events: &[SweepEvent],
+    node: u32,
+) {
+    let below = match status.prev(node) {
+        NONE => None,
+        b => Some(status.key(b)),
+    };
+    let edge = status.key(node);
+    let flags = selection.flags(
+        events[edge.event as usize].winding,
+        edge.line.is_vertical(),
+        below.map(|b| (b.event, &b.flags, b.line.is_vertical())),
+    );
+    status.key_mut(node).flags = flags;
 }
 
 #[cfg(test)]
