@@ -38,8 +38,9 @@ pub struct Explorer {
     options: Options,
     operands: [Arc<MultiPolygon>; 2],
     steps: Vec<Step>,
-    /// Where each event is in `steps`.
+    /// Where each event is in `steps`, and where the events' steps end (the rings follow).
     events: Vec<usize>,
+    events_end: usize,
     /// The events whose S is in `steps`.
     window: Range<usize>,
     selected: Vec<Selected>,
@@ -69,6 +70,7 @@ impl Explorer {
             operands,
             steps: Vec::new(),
             events: Vec::new(),
+            events_end: 0,
             window: 0..0,
             selected: Vec::new(),
             subdivisions: Vec::new(),
@@ -119,6 +121,9 @@ impl Explorer {
                 _ => {}
             }
         }
+        self.events_end = (self.steps.iter())
+            .position(|s| matches!(s, Step::Ring { .. }))
+            .unwrap_or(self.steps.len());
         Ok(())
     }
 
@@ -206,7 +211,7 @@ impl Explorer {
         let Some(&start) = self.events.get(self.position) else {
             return &[];
         };
-        let end = (self.events.get(self.position + 1).copied()).unwrap_or(self.events_end());
+        let end = (self.events.get(self.position + 1).copied()).unwrap_or(self.events_end);
         let steps = &self.steps[start + 1..end];
         match steps.last() {
             Some(Step::Status(_)) => &steps[..steps.len() - 1],
@@ -219,18 +224,11 @@ impl Explorer {
         let Some(&start) = self.events.get(self.position) else {
             return &[];
         };
-        let end = (self.events.get(self.position + 1).copied()).unwrap_or(self.events_end());
+        let end = (self.events.get(self.position + 1).copied()).unwrap_or(self.events_end);
         match self.steps[start + 1..end].last() {
             Some(Step::Status(edges)) => edges,
             _ => &[],
         }
-    }
-
-    /// Where the steps of the events end (the rings follow).
-    fn events_end(&self) -> usize {
-        (self.steps.iter())
-            .position(|s| matches!(s, Step::Ring { .. }))
-            .unwrap_or(self.steps.len())
     }
 
     /// The edges selected into the result up to the position, in the order they were.

@@ -330,18 +330,19 @@ impl Playground {
         }
         let rings = explorer.rings();
         let polygons = rings.iter().map(|r| r.polygon + 1).max().unwrap_or(0);
+        let mut closed = vec![0; polygons];
+        for ring in rings {
+            closed[ring.polygon] += 1;
+        }
         exploring.ring_fills.resize(polygons, (0, Fill::default()));
-        for (polygon, (closed, fill)) in exploring.ring_fills.iter_mut().enumerate() {
-            let of_polygon: Vec<_> = rings.iter().filter(|r| r.polygon == polygon).collect();
-            if of_polygon.len() != *closed {
-                let ring = |r: &&crate::explorer::ClosedRing| -> Vec<Point> {
-                    r.points.iter().map(|&p| Point::from(p)).collect()
-                };
-                let mut all = of_polygon.iter().map(ring);
-                let exterior = all.next().unwrap_or_default();
-                let shape = MultiPolygon::new(vec![Polygon::new(exterior, all.collect())]);
+        for (polygon, (filled, fill)) in exploring.ring_fills.iter_mut().enumerate() {
+            if *filled != closed[polygon] {
+                let mut of_polygon = (rings.iter().filter(|r| r.polygon == polygon))
+                    .map(|r| r.points.iter().map(|&p| Point::from(p)).collect::<Vec<_>>());
+                let exterior = of_polygon.next().unwrap_or_default();
+                let shape = MultiPolygon::new(vec![Polygon::new(exterior, of_polygon.collect())]);
                 *fill = Fill::of(&shape);
-                *closed = of_polygon.len();
+                *filled = closed[polygon];
             }
             layers.push(Layer::Fill(fill.clone(), RESULT_FILL));
         }
