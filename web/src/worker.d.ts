@@ -11,6 +11,7 @@ import type {
   overlayLayers,
   split,
   splitAntimeridian,
+  trace,
   union,
 } from './polysweep.js';
 
@@ -40,6 +41,8 @@ export interface PolysweepWorker {
   /** With a property name as key: a function cannot go to a worker. */
   dissolve: Job<typeof dissolve>;
   splitAntimeridian: Job<typeof splitAntimeridian>;
+  /** The sweep's steps, computed in the worker (a long trace leaves the page free). */
+  trace: Job<typeof trace>;
   /**
    * Each feature of `layer` clipped to `polygon`, as clipLayer of 'polysweep': the layer is read and the result's
    * features built on the calling thread, the clipping done in the worker, batch by batch, with progress.

@@ -11,7 +11,7 @@ import { buffersOf, finishClipLayer, prepareClipLayer } from './layer-clip.js';
 
 const ERRORS = { TypeError, RangeError };
 // The operations that take GeoJSON (or the flat form) and run as they are in the worker.
-const CLONED = ['union', 'intersection', 'difference', 'xor', 'overlayFlat', 'clip', 'split', 'overlayLayers', 'dissolve', 'splitAntimeridian'];
+const CLONED = ['union', 'intersection', 'difference', 'xor', 'overlayFlat', 'clip', 'split', 'overlayLayers', 'dissolve', 'splitAntimeridian', 'trace'];
 
 const abortError = () => new DOMException('The polysweep job was aborted', 'AbortError');
 

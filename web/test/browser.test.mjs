@@ -103,6 +103,11 @@ test('polysweep/worker: jobs in a module worker, errors, transfer, progress and 
   assertClean(outcome);
   const r = outcome.results;
   assert.equal(area(r.union), 7);
+  // The trace of [0, 2]² ∩ [1, 3]², in the worker: 8 edges, two crossings ((1, 2) and (2, 1)) splitting two edges
+  // each: 12 edges, 24 events; one ring, the unit square [1, 2]².
+  assert.equal(r.trace.events, 24);
+  assert.equal(r.trace.rings.length, 1);
+  assert.equal(area([[r.trace.rings[0]]]), 1);
   assert.deepEqual(r.error, { error: r.syncError }, 'the worker rejects with the error the sync call throws');
   assert.equal(r.syncError.name, 'TypeError');
   assert.equal(r.coordinateError.error.name, 'RangeError');
