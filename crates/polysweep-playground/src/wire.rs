@@ -118,7 +118,7 @@ pub fn read_derivation(numbers: &[f64]) -> Result<Derivation, Malformed> {
             let outcome = match r.count()? {
                 0 => Ok(Outcome {
                     result: MultiPolygon::new(r.polygons()?),
-                    crossings: r.count()?,
+                    crossings: r.whole()?,
                     milliseconds: r.number()?,
                 }),
                 _ => Err(r.error()?),
@@ -238,13 +238,21 @@ impl<'a> Reader<'a> {
         Ok(n)
     }
 
-    fn count(&mut self) -> Result<usize, Malformed> {
+    /// A whole number, not negative.
+    fn whole(&mut self) -> Result<usize, Malformed> {
         let n = self.number()?;
-        // A count never exceeds what is left to read, which also bounds what a bad message can make us allocate.
-        if n.fract() != 0.0 || n < 0.0 || n > self.numbers.len() as f64 {
+        // (NaN fails the first test.)
+        if !(n >= 0.0 && n.fract() == 0.0 && n <= usize::MAX as f64) {
             return Err(Malformed);
         }
         Ok(n as usize)
+    }
+
+    /// A count, which never exceeds the length of the message: that also bounds what a bad message can make us
+    /// allocate.
+    fn count(&mut self) -> Result<usize, Malformed> {
+        let n = self.whole()?;
+        (n <= self.numbers.len()).then_some(n).ok_or(Malformed)
     }
 
     /// A code below `limit`.
@@ -289,10 +297,10 @@ impl<'a> Reader<'a> {
 
     fn location(&mut self) -> Result<Location, Malformed> {
         Ok(Location {
-            operand: self.count()?,
-            polygon: self.count()?,
-            ring: self.count()?,
-            vertex: self.count()?,
+            operand: self.whole()?,
+            polygon: self.whole()?,
+            ring: self.whole()?,
+            vertex: self.whole()?,
         })
     }
 
@@ -307,11 +315,11 @@ impl<'a> Reader<'a> {
                 value: self.number()?,
             },
             2 => Error::TooLarge {
-                limit: self.number()? as usize,
+                limit: self.whole()?,
             },
             3 => Error::OutOfMemory {
-                edges: self.count()?,
-                crossings: self.count()?,
+                edges: self.whole()?,
+                crossings: self.whole()?,
             },
             _ => return Err(Malformed),
         })
@@ -431,6 +439,51 @@ mod tests {
                 .contains("operand 1, polygon 0, ring 0, vertex 1"),
             "{error}"
         );
+    }
+
+    #[test]
+    fn figures_larger_than_the_message_read_back() {
+        // An empty result after many crossings, and errors with large figures: not counts of what follows.
+        let empty_after_crossings = Derivation::Result(Box::new(Computed::new(
+            Ok(Outcome {
+                result: MultiPolygon::default(),
+                crossings: 1_000_000,
+                milliseconds: 2.5,
+            }),
+            Fill::default(),
+            Some(Err(Error::OutOfMemory {
+                edges: 3_000_000,
+                crossings: 7_000_000,
+            })),
+            Vec::new(),
+        )));
+        let written = write_derivation(&empty_after_crossings).unwrap();
+        let Ok(Derivation::Result(computed)) = read_derivation(&written) else {
+            panic!("a result reads back as one");
+        };
+        assert_eq!(computed.outcome.as_ref().unwrap().crossings, 1_000_000);
+        let error = computed.cut.as_ref().unwrap().as_ref().unwrap_err();
+        assert_eq!(
+            *error,
+            Error::OutOfMemory {
+                edges: 3_000_000,
+                crossings: 7_000_000
+            }
+        );
+        let far_vertex = Error::NonFiniteCoordinate {
+            at: Location {
+                operand: 1,
+                polygon: 4_000,
+                ring: 2,
+                vertex: 123_456,
+            },
+            value: f64::INFINITY,
+        };
+        for error in [Error::TooLarge { limit: 1 << 31 }, far_vertex] {
+            let mut w = Writer::default();
+            w.error(&error).unwrap();
+            assert_eq!(Reader::new(&w.0).error().unwrap(), error);
+        }
     }
 
     #[test]

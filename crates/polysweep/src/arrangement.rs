@@ -21,6 +21,7 @@ use crate::geometry::Polygon;
 use crate::options::Options;
 use crate::select::{Flags, Selection};
 use crate::sweep::Sweep;
+use crate::trace::Silent;
 use crate::workspace::{self, room};
 use std::collections::HashMap;
 
@@ -137,6 +138,7 @@ impl Arrangement {
                 magnitude,
                 shortcuts,
                 workspace,
+                Silent,
             );
             sweep.sources = Some(Sources::new(sweep.events.len()));
             sweep.run()?;

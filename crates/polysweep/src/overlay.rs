@@ -18,6 +18,7 @@ use crate::select::{FillRule, Operation, Selection};
 use crate::snap_round::Grid;
 use crate::structure::{add_watched_edges, valid_by_structure, Watch};
 use crate::sweep::Sweep;
+use crate::trace::Silent;
 use crate::validate::validate;
 use crate::workspace::{self, Workspace};
 use crate::{connect, prune, rounding, snap_round};
@@ -301,6 +302,7 @@ fn start_sweep<'a>(
         pass.magnitude,
         shortcuts,
         workspace,
+        Silent,
     ))
 }
 

@@ -22,7 +22,7 @@ use crate::edges::{EventId, NONE};
 use crate::exact::SweepPoint;
 use crate::geometry::{larger, smaller};
 use crate::sweep::Sweep;
-use crate::trace::{Meeting, Observer, Step};
+use crate::trace::{Meeting, Observer};
 use std::cmp::Ordering::{Equal, Less};
 
 impl<O: Observer> Sweep<'_, O> {
@@ -65,7 +65,9 @@ impl<O: Observer> Sweep<'_, O> {
             _ => {
                 self.watch_contact(lower, upper);
                 let x = self.exact.crossing(&l1, &l2);
-                self.trace_meeting(lower, upper, Meeting::Crossing, &x);
+                if O::ON {
+                    self.trace_meeting(lower, upper, Meeting::Crossing, &x);
+                }
                 self.split_crossing(lower, upper, x);
                 return;
             }
@@ -73,24 +75,11 @@ impl<O: Observer> Sweep<'_, O> {
         for node in [lower, upper] {
             if self.strictly_inside(node, &meeting) {
                 self.watch_contact(lower, upper);
-                self.trace_meeting(lower, upper, Meeting::VertexOnEdge, &meeting);
+                if O::ON {
+                    self.trace_meeting(lower, upper, Meeting::VertexOnEdge, &meeting);
+                }
                 self.split(self.status.event(node), meeting);
             }
-        }
-    }
-
-    /// Reports what possibleInter found (see [`crate::trace`]; nothing for the operations).
-    #[inline(always)]
-    fn trace_meeting(&mut self, lower: u32, upper: u32, meeting: Meeting, at: &SweepPoint) {
-        if O::ON {
-            let [lower, upper] = [lower, upper].map(|n| self.trace_edge(self.status.event(n)));
-            let at = at.approx;
-            (self.observer).step(Step::Meeting {
-                lower,
-                upper,
-                meeting,
-                at,
-            });
         }
     }
 
@@ -104,12 +93,15 @@ impl<O: Observer> Sweep<'_, O> {
             return; // they touch at an endpoint at most
         }
         self.watch_contact(lower, upper);
-        let start = if self.exact.cmp_points(&a1, &a2) == Less {
-            a2
-        } else {
-            a1
-        };
-        self.trace_meeting(lower, upper, Meeting::Overlap, &start);
+        if O::ON {
+            // The common part starts at the later left end.
+            let start = if self.exact.cmp_points(&a1, &a2) == Less {
+                a2
+            } else {
+                a1
+            };
+            self.trace_meeting(lower, upper, Meeting::Overlap, &start);
+        }
         for (node, [first, last]) in [(lower, [a2, b2]), (upper, [a1, b1])] {
             // The far point first, so that the edge keeps its left part and the second split cuts that part.
             for p in [last, first] {
@@ -177,11 +169,7 @@ impl<O: Observer> Sweep<'_, O> {
     /// one after it.
     fn cut(&mut self, edge: EventId, p: SweepPoint) -> EventId {
         if O::ON {
-            let step = Step::Subdivision {
-                edge: self.trace_edge(edge),
-                at: p.approx,
-            };
-            self.observer.step(step);
+            self.trace_subdivision(edge, &p);
         }
         let base = self.event(edge).clone();
         let right = base.other;

@@ -44,7 +44,7 @@ use crate::exact::{Exact, Line, SweepPoint};
 use crate::options::Shortcuts;
 use crate::select::{Flags, Selection};
 use crate::structure::Watch;
-use crate::trace::{Observer, Reason, Silent, Step, TraceEdge};
+use crate::trace::{Observer, Silent};
 use crate::workspace::{room, take, Workspace};
 
 mod close_calls;
@@ -60,13 +60,13 @@ use std::cmp::Ordering;
 #[derive(Clone, Copy)]
 pub(crate) struct InStatus {
     pub line: Line,
-    operand: Operand,
+    pub operand: Operand,
     pub segment: u32,
     pub event: EventId,
     /// The endpoints of the edge (not of its input segment), left and right.
     pub left: SweepPoint,
     pub right: SweepPoint,
-    flags: Flags,
+    pub flags: Flags,
     vertex: u32,
 }
 
@@ -112,26 +112,11 @@ pub(crate) struct Sweep<'a, O: Observer = Silent> {
     pub observer: O,
 }
 
-impl<'a> Sweep<'a> {
-    /// A sweep of `edges`, all within coordinates of magnitude `magnitude`. Its vectors are `workspace`'s (see
+impl<'a, O: Observer> Sweep<'a, O> {
+    /// A sweep of `edges`, all within coordinates of magnitude `magnitude`, reporting its steps to `observer`
+    /// ([`Silent`] for the operations, see [`crate::trace`]). Its vectors are `workspace`'s (see
     /// [`Self::give_back`]).
     pub fn new(
-        edges: &'a [InputEdge],
-        selection: Selection,
-        stop_x: f64,
-        magnitude: f64,
-        shortcuts: Shortcuts,
-        workspace: &mut Workspace,
-    ) -> Self {
-        Sweep::observed(
-            edges, selection, stop_x, magnitude, shortcuts, workspace, Silent,
-        )
-    }
-}
-
-impl<'a, O: Observer> Sweep<'a, O> {
-    /// [`Sweep::new`], reporting its steps to `observer`.
-    pub fn observed(
         edges: &'a [InputEdge],
         selection: Selection,
         stop_x: f64,
@@ -258,9 +243,7 @@ impl<'a, O: Observer> Sweep<'a, O> {
 
             self.assign_vertex(e);
             if O::ON {
-                let (left, edge) = (self.event(e).left(), self.trace_edge(e));
-                let point = point.approx;
-                self.observer.step(Step::Event { point, left, edge });
+                self.trace_event(e);
             }
             if head.partner != NONE {
                 self.process_crossing(e, head.partner);
@@ -270,8 +253,7 @@ impl<'a, O: Observer> Sweep<'a, O> {
                 self.process_right(e);
             }
             if O::ON && self.observer.wants_status() {
-                let status = self.trace_status();
-                self.observer.step(Step::Status(status));
+                self.trace_status();
             }
         }
         match self.stopped.take() {
@@ -387,71 +369,6 @@ impl<'a, O: Observer> Sweep<'a, O> {
     #[inline(always)]
     pub fn set_flags(&mut self, node: u32) {
         set_flags(&mut self.status, &self.selection, &self.events, node);
-    }
-
-    /// Reports the flags of Fig. 9 the edge at `node` got (see [`crate::trace`]).
-    #[cold]
-    fn trace_flags(&mut self, node: u32) {
-        let below = self.status.prev(node);
-        let coverage_below = match below {
-            NONE => [0; 2],
-            b => self.status.key(b).flags.coverage_above,
-        };
-        let edge = self.status.key(node);
-        let fill_rule = self.selection.fill_rule();
-        let own = edge.operand as usize;
-        let step = Step::Flags {
-            edge: self.trace_edge(edge.event),
-            coverage_below,
-            in_out: fill_rule.is_inside(coverage_below[own]),
-            inside_other: fill_rule.is_inside(coverage_below[1 - own]),
-            in_result: edge.flags.in_result,
-        };
-        self.observer.step(step);
-    }
-
-    /// Reports the selection of Fig. 10 for the edge of left event `l`, leaving S (see [`crate::trace`]).
-    #[cold]
-    fn trace_selection(&mut self, l: EventId, edge: &InStatus) {
-        let winding = self.event(l).winding;
-        let above = edge.flags.coverage_above;
-        let below = if edge.line.is_vertical() {
-            above
-        } else {
-            [above[0] - winding[0], above[1] - winding[1]]
-        };
-        let step = Step::Selection {
-            edge: self.trace_edge(l),
-            in_result: edge.flags.in_result,
-            reason: Reason::of(self.selection.fill_rule(), winding, below),
-        };
-        self.observer.step(step);
-    }
-
-    /// The edge of event `e` (left or right) as the trace shows it.
-    pub(crate) fn trace_edge(&self, e: EventId) -> TraceEdge {
-        let l = if self.event(e).left() {
-            e
-        } else {
-            self.event(e).other
-        };
-        TraceEdge {
-            left: self.point(l).approx,
-            right: self.far_point(l).approx,
-            operand: self.input_edge(l).operand as usize,
-            winding: self.event(l).winding,
-        }
-    }
-
-    /// S, bottom to top, as the trace shows it.
-    fn trace_status(&self) -> Vec<TraceEdge> {
-        let mut edges = Vec::new();
-        let mut node = self.status.lowest();
-        while node != NONE {
-            edges.push(self.trace_edge(self.status.event(node)));
-            node = self.status.next(node);
-        }
-        edges
     }
 
     fn process_left(&mut self, e: EventId) {
@@ -608,95 +525,4 @@ fn set_flags(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::geometry::MultiPolygon;
-    use crate::input::add_edges;
-    use crate::select::{FillRule, Operation};
-
-    #[test]
-    fn a_crossing_is_one_step_where_nothing_else_happens_and_four_events_where_it_does() {
-        // The squares [0, 2]² and [1, 3]² cross properly at (2, 1) and (1, 2), with nothing else there: each
-        // crossing is one step. With a triangle in the clipping operand whose long edge, on y = x - 1, passes
-        // through (2, 1) too, the subject's vertical edge is split there as well: that crossing has other events at
-        // its point, and goes back to four events.
-        let square =
-            |x: f64, y: f64| vec![vec![[x, y], [x + 2.0, y], [x + 2.0, y + 2.0], [x, y + 2.0]]];
-        let triangle = vec![vec![[0.0, -1.0], [4.0, -1.0], [4.0, 3.0]]];
-        let p = MultiPolygon::from_coordinates(&[square(0.0, 0.0)]);
-        let q = MultiPolygon::from_coordinates(&[square(1.0, 1.0)]);
-        let q_and_t = MultiPolygon::from_coordinates(&[square(1.0, 1.0), triangle]);
-        let area = |operation, a: &MultiPolygon, b: &MultiPolygon| {
-            let options = crate::Options::default().with_fill_rule(FillRule::EvenOdd);
-            crate::overlay(operation, a, b, &options).unwrap().area()
-        };
-        use Operation::*;
-        assert_eq!(
-            [Intersection, Union, Difference, Xor].map(|o| area(o, &p, &q)),
-            [1.0, 7.0, 3.0, 6.0]
-        );
-        // Under even-odd the clipping operand is Q ⊕ T, of area 4 + 8 - 2 · 1/2 = 11 (Q ∩ T: x from 2 to 3 below
-        // the line); P ∩ (Q ⊕ T) = P ∩ Q, 1, plus P ∩ T, 1/2 (x from 1 to 2 below the line), less twice P ∩ Q ∩ T,
-        // which has no area.
-        assert_eq!(
-            [Intersection, Union, Difference, Xor].map(|o| area(o, &p, &q_and_t)),
-            [1.5, 4.0 + 11.0 - 1.5, 4.0 - 1.5, 4.0 + 11.0 - 3.0]
-        );
-    }
-
-    #[test]
-    fn a_sweep_that_outgrows_its_limit_stops_with_an_error() {
-        // Five thin bars across five others: 4 crossings per pair of bars, 100 in all, each adding 4 events to
-        // the 80 initial ones.
-        let bar = |x: f64, y: f64, w: f64, h: f64| {
-            vec![vec![[x, y], [x + w, y], [x + w, y + h], [x, y + h]]]
-        };
-        let across = MultiPolygon::from_coordinates(
-            &(0..5)
-                .map(|i| bar(0.0, 2.0 * i as f64, 10.0, 1.0))
-                .collect::<Vec<_>>(),
-        );
-        let up = MultiPolygon::from_coordinates(
-            &(0..5)
-                .map(|i| bar(2.0 * i as f64 + 0.5, -1.0, 1.0, 12.0))
-                .collect::<Vec<_>>(),
-        );
-        let mut edges = Vec::new();
-        add_edges(&mut edges, &across, 0, |_| true);
-        add_edges(&mut edges, &up, 1, |_| true);
-        let selection = Selection::Pair {
-            operation: Operation::Intersection,
-            fill_rule: FillRule::EvenOdd,
-        };
-        let sweep = || {
-            Sweep::new(
-                &edges,
-                selection,
-                f64::INFINITY,
-                12.0,
-                Shortcuts::ALL,
-                &mut Default::default(),
-            )
-        };
-        let mut whole = sweep();
-        assert_eq!(whole.run(), Ok(()));
-        assert_eq!(
-            (whole.events.len(), whole.exact.crossing_count()),
-            (480, 100)
-        );
-        for limit in [80, 200, 479] {
-            let mut limited = sweep();
-            limited.max_events = limit;
-            let error = limited.run().expect_err("more events than the limit");
-            assert!(limited.events.len() <= limit);
-            assert_eq!(error, Error::TooLarge { limit });
-            assert_eq!(error.location(), None);
-            assert!(
-                error
-                    .to_string()
-                    .contains(&format!("more than {limit} sweep events")),
-                "{error}"
-            );
-        }
-    }
-}
+mod tests;

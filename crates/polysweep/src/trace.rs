@@ -7,12 +7,14 @@
 //! report is compiled away and the operations run the same instructions as without this module. [`trace`] runs the
 //! paper's algorithm (every shortcut of [`crate::Shortcuts`] off) with an observer that records the steps.
 
+use crate::edges::{EventId, NONE};
 use crate::error::Error;
+use crate::exact::SweepPoint;
 use crate::geometry::MultiPolygon;
 use crate::input;
 use crate::options::{Options, Shortcuts};
 use crate::select::{FillRule, Operation, Selection};
-use crate::sweep::Sweep;
+use crate::sweep::{InStatus, Sweep};
 use crate::workspace::Workspace;
 use std::ops::Range;
 
@@ -207,7 +209,7 @@ pub fn trace_with_status_for(
         fill_rule,
     };
     let mut workspace = Workspace::default();
-    let mut sweep = Sweep::observed(
+    let mut sweep = Sweep::new(
         &edges,
         selection,
         f64::INFINITY,
@@ -240,4 +242,110 @@ pub fn trace_with_status_for(
         }
     }
     Ok(steps)
+}
+
+/// The sweep's reports, each called behind `if O::ON` and `#[cold]`, so that a [`Silent`] sweep has none of them.
+impl<O: Observer> Sweep<'_, O> {
+    /// The event `e`, taken from Q.
+    #[cold]
+    pub(crate) fn trace_event(&mut self, e: EventId) {
+        let (point, left, edge) = (
+            self.point(e).approx,
+            self.event(e).left(),
+            self.trace_edge(e),
+        );
+        self.observer.step(Step::Event { point, left, edge });
+    }
+
+    /// S after the event, bottom to top.
+    #[cold]
+    pub(crate) fn trace_status(&mut self) {
+        let mut edges = Vec::new();
+        let mut node = self.status.lowest();
+        while node != NONE {
+            edges.push(self.trace_edge(self.status.event(node)));
+            node = self.status.next(node);
+        }
+        self.observer.step(Step::Status(edges));
+    }
+
+    /// What possibleInter found between the edges at nodes `lower` and `upper` of S.
+    #[cold]
+    pub(crate) fn trace_meeting(
+        &mut self,
+        lower: u32,
+        upper: u32,
+        meeting: Meeting,
+        at: &SweepPoint,
+    ) {
+        let [lower, upper] = [lower, upper].map(|n| self.trace_edge(self.status.event(n)));
+        let at = at.approx;
+        self.observer.step(Step::Meeting {
+            lower,
+            upper,
+            meeting,
+            at,
+        });
+    }
+
+    /// The edge of left event `edge`, in S, split at `p`.
+    #[cold]
+    pub(crate) fn trace_subdivision(&mut self, edge: EventId, p: &SweepPoint) {
+        let edge = self.trace_edge(edge);
+        self.observer.step(Step::Subdivision { edge, at: p.approx });
+    }
+
+    /// The flags of Fig. 9 the edge at `node` got on entering S.
+    #[cold]
+    pub(crate) fn trace_flags(&mut self, node: u32) {
+        let below = self.status.prev(node);
+        let coverage_below = match below {
+            NONE => [0; 2],
+            b => self.status.key(b).flags.coverage_above,
+        };
+        let edge = self.status.key(node);
+        let fill_rule = self.selection.fill_rule();
+        let own = edge.operand as usize;
+        let step = Step::Flags {
+            edge: self.trace_edge(edge.event),
+            coverage_below,
+            in_out: fill_rule.is_inside(coverage_below[own]),
+            inside_other: fill_rule.is_inside(coverage_below[1 - own]),
+            in_result: edge.flags.in_result,
+        };
+        self.observer.step(step);
+    }
+
+    /// The selection of Fig. 10 for the edge of left event `l`, leaving S.
+    #[cold]
+    pub(crate) fn trace_selection(&mut self, l: EventId, edge: &InStatus) {
+        let winding = self.event(l).winding;
+        let above = edge.flags.coverage_above;
+        let below = if edge.line.is_vertical() {
+            above
+        } else {
+            [above[0] - winding[0], above[1] - winding[1]]
+        };
+        let step = Step::Selection {
+            edge: self.trace_edge(l),
+            in_result: edge.flags.in_result,
+            reason: Reason::of(self.selection.fill_rule(), winding, below),
+        };
+        self.observer.step(step);
+    }
+
+    /// The edge of event `e` (left or right) as the trace shows it.
+    fn trace_edge(&self, e: EventId) -> TraceEdge {
+        let l = if self.event(e).left() {
+            e
+        } else {
+            self.event(e).other
+        };
+        TraceEdge {
+            left: self.point(l).approx,
+            right: self.far_point(l).approx,
+            operand: self.input_edge(l).operand as usize,
+            winding: self.event(l).winding,
+        }
+    }
 }
