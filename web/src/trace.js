@@ -21,7 +21,9 @@ import { trace_flat } from './polysweep_wasm.js';
  *   `points`.
  * An edge is `{left, right, operand, winding}`: its endpoints in sweep order, the operand of its input edge (0 the
  * subject, 1 the clipping operand) and its winding per operand (both non-zero where overlapping edges merged).
- * Errors are those of the Boolean operations. Every step is kept: for teaching-sized input, not for big data.
+ * Under the structural reading (the default fill rule) the trace is of the even-odd sweep that reading starts with,
+ * which for valid polygon sets is the whole operation. Errors are those of the Boolean operations. Every step is
+ * kept: for teaching-sized input, not for big data.
  */
 export function trace(operation, subject, clipping, options) {
   if (!isKeyOf(OPERATIONS, operation)) {
