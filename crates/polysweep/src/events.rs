@@ -229,7 +229,8 @@ pub(crate) struct SortScratch {
     pub position: Vec<u32>,
     pub buckets: Vec<u32>,
     /// Per operand: more than two of its endpoints at one point, rings of it that touch or meet there or a ring
-    /// that passes twice through it (read by [`crate::structure`]).
+    /// that passes twice through it (read by [`crate::structure`], whose watched sweeps never merge identical
+    /// edges: noted only then, as on boards and parcel maps every inner corner is such a point).
     pub shared_vertex: [bool; 2],
     /// For each input edge, the edge it is merged into (see `merge_identical` in [`initial_events`]), or `NONE`.
     pub merged_into: Vec<u32>,
@@ -256,7 +257,8 @@ fn note_shared_vertex(shared: &mut [bool; 2], at_one_point: &[u32], edges: &[Inp
 /// keys that order like the coordinates, by value (see [`sort`]); those with one x, which then come out
 /// next to each other, are sorted again by y, and the endpoints at one point by [`order_at_point`]. The sort moves
 /// small keys and reads the compact edges, never the larger events. It works in `scratch`, and writes the events
-/// into `events` (given empty, with the room of an earlier sweep), and notes `scratch.shared_vertex`.
+/// into `events` (given empty, with the room of an earlier sweep), and, unless it merges identical edges, notes
+/// `scratch.shared_vertex`.
 pub(crate) fn initial_events(
     edges: &[InputEdge],
     exact: &Exact,
@@ -364,7 +366,9 @@ pub(crate) fn initial_events(
                     .flat_map(|&(_, ends)| ends)
                     .filter(|&end| end != NONE),
             );
-            note_shared_vertex(&mut scratch.shared_vertex, &at_one_point, edges);
+            if !merge_identical {
+                note_shared_vertex(&mut scratch.shared_vertex, &at_one_point, edges);
+            }
             if merge_identical {
                 // The right ends of edges merged at their left ends make no events.
                 at_one_point.retain(|&end| end % 2 == 1 || merged_into[end as usize / 2] == NONE);
