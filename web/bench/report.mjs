@@ -424,7 +424,7 @@ const DENSE_TARGET = 0.8;
 /** The dense workloads in the order of crates/polysweep-bench/src/dense.rs, each shape in one line. */
 const DENSE_SHAPES = {
   checkerboard: 'n × n squares of side 20, 30 apart, ⊕ the (n − 1) × (n − 1) of the same shifted by 15 in x and y: each square overlaps four others at its corners, every edge collinear with the others of its row or column',
-  'not-overlap': 'as the checkerboard with squares of side 10: no two squares meet; the union is every square',
+  'not-overlap': 'as the checkerboard with squares of side 10: no two squares meet; the union is every square (polysweep sweeps none of them: each is a simple ring apart from all others, which a union copies as it is, see copy_apart in docs/architecture.md)',
   'shared-edges': 'the black cells of an n × n board (cells of side 10) ∪ its white cells: every inner edge is shared, four cells meet at every inner corner, and the union is one square (a parcel map\'s shape)',
   'lines-net': 'n vertical bars (width 10, 20 apart) ∩ n horizontal bars: n² crossings of bars, 4n² crossing points',
   spiral: 'one ring of n vertices, a band along an Archimedean spiral whose width swings above and below the spacing of its turns (each turn crosses the next 14 times), ∪ nothing: the region the band covers',

@@ -51,6 +51,9 @@ pub struct Shortcuts {
     /// An intersection copies clipping polygons wholly inside the subject and apart from the others to its result
     /// (only those that `prune_by_winding` has found inside: off with it).
     pub copy_inside: bool,
+    /// A union, a xor or a difference copies polygons apart from all others to its result (of the subject only,
+    /// for a difference).
+    pub copy_apart: bool,
     /// A union or a difference leaves out subject polygons inside one convex clipping polygon.
     pub prune_inside_convex: bool,
     /// The sweep stops past the last x where the result can have an edge.
@@ -80,6 +83,7 @@ impl Shortcuts {
         prune_by_boxes: true,
         prune_by_winding: true,
         copy_inside: true,
+        copy_apart: true,
         prune_inside_convex: true,
         stop_early: true,
         crossing_step: true,
@@ -96,6 +100,7 @@ impl Shortcuts {
         prune_by_boxes: false,
         prune_by_winding: false,
         copy_inside: false,
+        copy_apart: false,
         prune_inside_convex: false,
         stop_early: false,
         crossing_step: false,

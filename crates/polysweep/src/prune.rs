@@ -5,7 +5,9 @@
 //! a union, so it is left out of the sweep (see [`plan`]). This is what makes clipping a coastline
 //! with a grid of tiles cost little more than the tiles that meet the coast: most tiles lie out at sea. Of those
 //! inside, an intersection copies to its result the ones it can tell are their own part of it, simple rings apart
-//! from the other tiles (see [`copied_whole`]).
+//! from the other tiles (see [`copied_whole`]). A union, a xor or a difference copies the polygons that are simple
+//! rings apart from all others, of either operand (see [`copied_apart`]): islands, or the separate features of a
+//! layer.
 //!
 //! [`KnownWinding`] finds the winding number of all the places at once, on a grid (see [`Grid`]):
 //! - a cell that no edge's box touches has no edge in it, so one winding number holds in all of it, and in all of a
@@ -49,12 +51,12 @@ use crate::input::Bounds;
 use crate::options::Shortcuts;
 use crate::select::{FillRule, Operation};
 use convex::inside_one_convex;
-use copy::copied_whole;
+use copy::{copied_apart, copied_whole};
 use grid::{Coverage, Grid};
 use winding::KnownWinding;
 
 /// What the sweep takes of two operands: which polygons of the subject and of the clipping operand it sweeps, and
-/// the clipping polygons an intersection copies to its result instead.
+/// the polygons copied to the result instead (see [`copied_whole`] and [`copied_apart`]).
 pub(crate) struct Plan {
     pub subject: Vec<bool>,
     pub clipping: Vec<bool>,
@@ -83,8 +85,16 @@ pub(crate) fn plan(
         copies: Vec::new(),
         judged_by_subject: false,
     };
+    if operation != Operation::Intersection && shortcuts.copy_apart {
+        let copy_clipping = operation != Operation::Difference;
+        let boxes = [subject_boxes, clipping_boxes];
+        let copied;
+        (copied, plan.copies) =
+            copied_apart([subject, clipping], boxes, copy_clipping, fill_rule, margin);
+        [plan.subject, plan.clipping] = copied.map(|c| c.iter().map(|&c| !c).collect());
+    }
     if operation == Operation::Xor {
-        return plan; // every polygon of either operand changes a xor
+        return plan; // every other polygon of either operand changes a xor
     }
     // Each clipping polygon inside the subject (`Some(true)`) or outside it (`Some(false)`) throughout its box
     // grown by `margin`, where known; judged by the whole subject, before any of it is left out. An intersection
@@ -102,7 +112,7 @@ pub(crate) fn plan(
         Some(false)
     };
     for (swept, inside) in plan.clipping.iter_mut().zip(&inside) {
-        *swept = *inside != left_out;
+        *swept &= *inside != left_out;
     }
     if operation == Operation::Intersection && shortcuts.copy_inside {
         let copied;

@@ -64,7 +64,7 @@ fn a_ring_with_a_hairpin_at_merged_vertices_is_kept() {
 /// inside the clipping operand's box but apart from C, D and E (on the grid of 3 × 3 cells the five polygons get,
 /// A's cell is one no clipping box touches); C and D lie outside the subject's box. Expected by hand: the
 /// intersection is B ∩ E = [51, 52]², area 1, from B and E only (8 edges swept); the difference is
-/// A + B − E, area 1 + 4 − 1, from A, B and E (12 edges).
+/// A + B − E, area 1 + 4 − 1, from B and E swept (8 edges) and A, apart from every other polygon, copied.
 #[test]
 fn polygons_apart_from_the_other_operand_are_left_out() {
     let boxes = |corners: &[[f64; 3]]| {
@@ -87,9 +87,48 @@ fn polygons_apart_from_the_other_operand_are_left_out() {
         &clipping,
         &[
             (Operation::Intersection, 1.0, 8),
-            (Operation::Difference, 4.0, 12),
+            (Operation::Difference, 4.0, 8),
         ],
     );
+}
+
+/// Polygons that are simple rings apart from every other polygon are copied to a union, a xor or a difference, not
+/// swept, and those of the clipping operand left out of a difference. Subject: A = [0, 2]², which overlaps the
+/// clipping square C = [1, 3]², B = [10, 11]² and the triangle T = (20, 0), (20, 1), (21, 0), given clockwise;
+/// clipping: C and D = [30, 31]². Expected by hand, with only A and C swept (8 edges): the union A ∪ C (7) + B (1)
+/// + T (0.5) + D (1) = 9.5 in four polygons; the xor, two L-shapes of 3 touching at two corners, + B + T + D = 8.5
+/// in five; the difference, A − C (3) + B + T = 4.5 in three. The same without any shortcut.
+#[test]
+fn polygons_apart_from_all_others_are_copied() {
+    let subject = MultiPolygon::from_coordinates(&[
+        vec![vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]]],
+        vec![vec![[10.0, 10.0], [11.0, 10.0], [11.0, 11.0], [10.0, 11.0]]],
+        vec![vec![[20.0, 0.0], [20.0, 1.0], [21.0, 0.0]]],
+    ]);
+    let clipping = MultiPolygon::from_coordinates(&[
+        vec![vec![[1.0, 1.0], [3.0, 1.0], [3.0, 3.0], [1.0, 3.0]]],
+        vec![vec![[30.0, 30.0], [31.0, 30.0], [31.0, 31.0], [30.0, 31.0]]],
+    ]);
+    let expected = [
+        (Operation::Union, 9.5, 4),
+        (Operation::Xor, 8.5, 5),
+        (Operation::Difference, 4.5, 3),
+    ];
+    assert_area_and_edges_swept(
+        &subject,
+        &clipping,
+        &expected.map(|(operation, area, _)| (operation, area, 8)),
+    );
+    for (operation, area, polygons) in expected {
+        for options in [Options::default(), Options::default().without_shortcuts()] {
+            let result = polysweep::overlay(operation, &subject, &clipping, &options).unwrap();
+            assert_eq!(
+                (result.area(), result.0.len()),
+                (area, polygons),
+                "{operation:?}"
+            );
+        }
+    }
 }
 
 /// Each operation's result has the area expected and is valid, and the sweep took the number of edges expected.

@@ -144,10 +144,11 @@ fn valid_input_is_read_by_its_structure_without_a_structural_pass() {
 type Switch = (&'static str, fn(&mut Shortcuts));
 
 /// Each optimisation not in the paper, switched off.
-const SWITCHES: [Switch; 12] = [
+const SWITCHES: [Switch; 13] = [
     ("prune_by_boxes", |s| s.prune_by_boxes = false),
     ("prune_by_winding", |s| s.prune_by_winding = false),
     ("copy_inside", |s| s.copy_inside = false),
+    ("copy_apart", |s| s.copy_apart = false),
     ("prune_inside_convex", |s| s.prune_inside_convex = false),
     ("stop_early", |s| s.stop_early = false),
     ("crossing_step", |s| s.crossing_step = false),

@@ -1,4 +1,5 @@
-//! Clipping polygons that an intersection copies to its result as they are, instead of sweeping them.
+//! Polygons that an operation copies to its result as they are, instead of sweeping them: clipping polygons inside
+//! the subject for an intersection, polygons apart from all others for the other operations.
 
 use super::grid::apart;
 use crate::exact::Line;
@@ -48,6 +49,50 @@ pub(crate) fn copied_whole(
     for (p, polygon) in clipping.0.iter().enumerate().filter(|&(p, _)| apart[p]) {
         if let Some(ring) = as_written(&polygon.exterior, fill_rule, margin) {
             copied[p] = true;
+            polygons.push(Polygon::new(ring, Vec::new()));
+        }
+    }
+    (copied, polygons)
+}
+
+/// The polygons that a union, a xor or a difference copies to its result as they are, instead of sweeping them, for
+/// each operand, and their copies as result polygons (clipping polygons only where `copy_clipping`: not for a
+/// difference, which leaves them out). Copied is a polygon that is one simple ring of a few vertices whose box is
+/// farther than `margin` from every other polygon's box, of either operand (`boxes`). There that ring is the only
+/// one, so its own region is its part of the result, as for [`copied_whole`]: the rest of the result lies within
+/// the other polygons' boxes, and rounding moves it by less than `margin`.
+pub(crate) fn copied_apart(
+    operands: [&MultiPolygon; 2],
+    boxes: [&[Bounds]; 2],
+    copy_clipping: bool,
+    fill_rule: FillRule,
+    margin: f64,
+) -> ([Vec<bool>; 2], Vec<Polygon>) {
+    let one_small_ring =
+        |p: &Polygon| p.holes.is_empty() && open_len(&p.exterior) <= MAX_VERTICES_TO_COPY;
+    let [subject, clipping] = operands.map(|operand| operand.0.as_slice());
+    let asked: Vec<bool> = (subject.iter().map(one_small_ring))
+        .chain(clipping.iter().map(|p| copy_clipping && one_small_ring(p)))
+        .collect();
+    let mut copied = [vec![false; subject.len()], vec![false; clipping.len()]];
+    if !asked.contains(&true) {
+        return (copied, Vec::new());
+    }
+    let all_boxes: Vec<Bounds> = boxes.concat();
+    let every_one: Vec<u32> = (0..all_boxes.len() as u32).collect();
+    let apart = apart(&all_boxes, margin, &asked, &every_one);
+    let mut polygons = Vec::new();
+    for (i, polygon) in subject.iter().chain(clipping).enumerate() {
+        if !apart[i] {
+            continue;
+        }
+        if let Some(ring) = as_written(&polygon.exterior, fill_rule, margin) {
+            let (operand, p) = if i < subject.len() {
+                (0, i)
+            } else {
+                (1, i - subject.len())
+            };
+            copied[operand][p] = true;
             polygons.push(Polygon::new(ring, Vec::new()));
         }
     }
