@@ -95,8 +95,8 @@ fn polygons_apart_from_the_other_operand_are_left_out() {
 /// Polygons that are simple rings apart from every other polygon are copied to a union, a xor or a difference, not
 /// swept, and those of the clipping operand left out of a difference. Subject: A = [0, 2]², which overlaps the
 /// clipping square C = [1, 3]², B = [10, 11]² and the triangle T = (20, 0), (20, 1), (21, 0), given clockwise;
-/// clipping: C and D = [30, 31]². Expected by hand, with only A and C swept (8 edges): the union A ∪ C (7) + B (1)
-/// + T (0.5) + D (1) = 9.5 in four polygons; the xor, two L-shapes of 3 touching at two corners, + B + T + D = 8.5
+/// clipping: C and D = [30, 31]². Expected by hand, with only A and C swept (8 edges): the union A ∪ C (7) plus B
+/// (1), T (0.5) and D (1), 9.5 in four polygons; the xor, two L-shapes of 3 touching at two corners, + B + T + D = 8.5
 /// in five; the difference, A − C (3) + B + T = 4.5 in three. The same without any shortcut.
 #[test]
 fn polygons_apart_from_all_others_are_copied() {
