@@ -24,7 +24,7 @@ mod queue;
 mod sort;
 
 pub(crate) use queue::{EventQueue, Head};
-use sort::ordered_bits;
+pub(crate) use sort::ordered_bits;
 
 /// 40 bytes: the events are the sweep's largest array, read front to back and, for an edge's other end or a
 /// neighbour's, far from where the sweep is, so their size is most of its memory traffic. (Larger events made the
@@ -493,8 +493,8 @@ mod tests {
             ring(&[[1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]]),
         ]);
         let mut edges = Vec::new();
-        add_edges(&mut edges, &subject, 0, |_| true);
-        add_edges(&mut edges, &clipping, 1, |_| true);
+        add_edges(&mut edges, &subject, 0, 0..subject.0.len());
+        add_edges(&mut edges, &clipping, 1, 0..clipping.0.len());
         let exact = Exact::default();
         let events = initial_events(&edges, &exact, &mut Default::default(), Vec::new(), false);
         assert_eq!(events.len(), 2 * edges.len());

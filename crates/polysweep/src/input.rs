@@ -2,6 +2,7 @@
 
 use crate::edges::{InputEdge, Operand};
 use crate::error::{Error, Location};
+use crate::events::ordered_bits;
 use crate::exact::Line;
 use crate::geometry::{
     larger, next_around, open_len, smaller, MultiPolygon, Point, Polygon, MAX_COORDINATE,
@@ -169,19 +170,34 @@ impl Bounds {
     }
 }
 
-/// Appends the edges of every ring of the polygons of `polygons` that `keep` (given a polygon's index) keeps.
+/// The polygons that `keep` keeps (given a polygon's index), from left to right by the left sides of their boxes
+/// `boxes`: the order in which an operation lists their edges. Not in the paper, and a matter of speed only. The
+/// sweep reads the edges in its own order, left to right; listed so, the edges it reads next lie in memory near
+/// those it has just read. (Listed row by row instead, the cells of a board's column lie a row apart, and the sweep
+/// of 200 × 200 cells took a third longer.)
+pub(crate) fn left_to_right(boxes: &[Bounds], keep: impl Fn(usize) -> bool) -> Vec<usize> {
+    let mut order: Vec<(u64, u32)> = (0..boxes.len())
+        .filter(|&p| keep(p))
+        .map(|p| (ordered_bits(boxes[p].min[0]), p as u32))
+        .collect();
+    order.sort_unstable();
+    order.into_iter().map(|(_, p)| p as usize).collect()
+}
+
+/// Appends the edges of every ring of the polygons of `polygons` that `which` names (by index), in that order.
 /// Edges of zero length are skipped; a ring with fewer than three vertices still gives its edges, which cancel each
 /// other (§7.2).
 pub(crate) fn add_edges(
     edges: &mut Vec<InputEdge>,
     polygons: &MultiPolygon,
     operand: Operand,
-    keep: impl Fn(usize) -> bool,
+    which: impl IntoIterator<Item = usize>,
 ) {
     edges.reserve(polygons.vertex_count()); // at most one edge per vertex
-    let kept = polygons.0.iter().enumerate().filter(|&(p, _)| keep(p));
-    for ring in kept.flat_map(|(_, p)| p.rings()) {
-        add_ring_edges(edges, ring, operand);
+    for p in which {
+        for ring in polygons.0[p].rings() {
+            add_ring_edges(edges, ring, operand);
+        }
     }
 }
 

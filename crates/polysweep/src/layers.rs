@@ -95,7 +95,7 @@ pub fn overlay_layers(
         // (The rule is the same for every feature: even-odd for one the structural reading has made valid.)
         let (readable, rule) = readable(feature, magnitude, options)?;
         fill_rule = rule;
-        input::add_edges(&mut edges, &readable, layer, |_| true);
+        input::add_edges(&mut edges, &readable, layer, 0..readable.0.len());
         feature_of_segment.resize(edges.len(), index as u32);
     }
     let arrangement = Arrangement::sweep(edges, magnitude, options)?;

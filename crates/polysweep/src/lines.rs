@@ -268,7 +268,7 @@ impl LinesAndPolygon {
         let magnitude = polygon_box.around(&lines_box).magnitude();
         let (polygon, fill_rule) = readable(polygon, magnitude, options)?;
         let mut edges = Vec::new();
-        input::add_edges(&mut edges, &polygon, 0, |_| true);
+        input::add_edges(&mut edges, &polygon, 0, 0..polygon.0.len());
         let first_line_segment = edges.len() as u32;
         let mut of_segment = Vec::new();
         for (i, line) in lines.iter().enumerate() {

@@ -104,12 +104,14 @@ pub(crate) fn overlay_checked(
     }
     workspace::with(shortcuts.keep_working_memory, |workspace| {
         let mut edges = workspace::take(&mut workspace.edges);
+        let subject_order = input::left_to_right(subject_boxes, |p| plan.subject[p]);
+        let clipping_order = input::left_to_right(clipping_boxes, |p| plan.clipping[p]);
         if let Some(watch) = watch.as_deref_mut() {
-            add_watched_edges(&mut edges, subject, 0, |p| plan.subject[p], watch);
-            add_watched_edges(&mut edges, clipping, 1, |p| plan.clipping[p], watch);
+            add_watched_edges(&mut edges, subject, 0, subject_order, watch);
+            add_watched_edges(&mut edges, clipping, 1, clipping_order, watch);
         } else {
-            input::add_edges(&mut edges, subject, 0, |p| plan.subject[p]);
-            input::add_edges(&mut edges, clipping, 1, |p| plan.clipping[p]);
+            input::add_edges(&mut edges, subject, 0, subject_order);
+            input::add_edges(&mut edges, clipping, 1, clipping_order);
         }
         let selection = Selection::Pair {
             operation,
@@ -160,7 +162,7 @@ fn overlay_many_in(
             valid_by_structure(operand, magnitude, options, workspace)?.0
         } else {
             let mut own = workspace::take(&mut workspace.edges);
-            input::add_edges(&mut own, operand, 0, |_| true);
+            input::add_edges(&mut own, operand, 0, 0..operand.0.len());
             sweep(
                 own,
                 normalise,
@@ -173,7 +175,7 @@ fn overlay_many_in(
             .0
         };
         let slot = u8::from(operation == Operation::Difference && index > 0);
-        input::add_edges(&mut edges, &valid, slot, |_| true);
+        input::add_edges(&mut edges, &valid, slot, 0..valid.0.len());
     }
     let in_slot_0 = if operation == Operation::Difference {
         1

@@ -89,12 +89,12 @@ pub(crate) fn add_watched_edges(
     edges: &mut Vec<InputEdge>,
     polygons: &MultiPolygon,
     operand: Operand,
-    keep: impl Fn(usize) -> bool,
+    which: impl IntoIterator<Item = usize>,
     watch: &mut Watch,
 ) {
     edges.reserve(polygons.vertex_count());
-    let kept = polygons.0.iter().enumerate().filter(|&(p, _)| keep(p));
-    for (p, polygon) in kept {
+    for p in which {
+        let polygon = &polygons.0[p];
         for (r, ring) in polygon.rings().enumerate() {
             let first_edge = edges.len();
             input::add_ring_edges(edges, ring, operand);
@@ -215,7 +215,7 @@ pub(crate) fn valid_by_structure(
         sweeps += 1;
         let mut watch = Watch::new();
         let mut edges = workspace::take(&mut workspace.edges);
-        add_watched_edges(&mut edges, operand, 0, |_| true, &mut watch);
+        add_watched_edges(&mut edges, operand, 0, 0..operand.0.len(), &mut watch);
         let union = Selection::Pair {
             operation: Operation::Union,
             fill_rule: FillRule::EvenOdd,
@@ -293,9 +293,9 @@ pub(crate) fn read_by_structure(
             )?);
         }
         let add = |edges: &mut Vec<InputEdge>| {
-            input::add_edges(edges, &outer, 0, |_| true);
+            input::add_edges(edges, &outer, 0, 0..outer.0.len());
             for hole in &holes {
-                input::add_edges(edges, hole, 1, |_| true);
+                input::add_edges(edges, hole, 1, 0..hole.0.len());
             }
         };
         regions.push(sweep_edges(&add, less_holes, workspace)?);
@@ -308,7 +308,7 @@ pub(crate) fn read_by_structure(
         &|edges| {
             regions
                 .iter()
-                .for_each(|r| input::add_edges(edges, r, 0, |_| true))
+                .for_each(|r| input::add_edges(edges, r, 0, 0..r.0.len()))
         },
         union,
         workspace,

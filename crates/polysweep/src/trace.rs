@@ -197,8 +197,8 @@ pub fn trace_with_status_for(
     let bounds = boxes.each_ref().map(|b| input::Bounds::around_all(b));
     let magnitude = bounds[0].around(&bounds[1]).magnitude();
     let mut edges = Vec::new();
-    input::add_edges(&mut edges, subject, 0, |_| true);
-    input::add_edges(&mut edges, clipping, 1, |_| true);
+    input::add_edges(&mut edges, subject, 0, 0..subject.0.len());
+    input::add_edges(&mut edges, clipping, 1, 0..clipping.0.len());
     let fill_rule = match options.fill_rule {
         // The structural reading sweeps more than once; its first sweep reads operands as even-odd does.
         FillRule::Structure => FillRule::EvenOdd,

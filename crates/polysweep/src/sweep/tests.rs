@@ -52,8 +52,8 @@ fn a_sweep_that_outgrows_its_limit_stops_with_an_error() {
             .collect::<Vec<_>>(),
     );
     let mut edges = Vec::new();
-    add_edges(&mut edges, &across, 0, |_| true);
-    add_edges(&mut edges, &up, 1, |_| true);
+    add_edges(&mut edges, &across, 0, 0..across.0.len());
+    add_edges(&mut edges, &up, 1, 0..up.0.len());
     let selection = Selection::Pair {
         operation: Operation::Intersection,
         fill_rule: FillRule::EvenOdd,
