@@ -24,7 +24,7 @@ mod queue;
 mod sort;
 
 pub(crate) use queue::{EventQueue, Head};
-pub(crate) use sort::ordered_bits;
+pub(crate) use sort::{ordered_bits, sort_by_key};
 
 /// 40 bytes: the events are the sweep's largest array, read front to back and, for an edge's other end or a
 /// neighbour's, far from where the sweep is, so their size is most of its memory traffic. (Larger events made the
@@ -249,6 +249,10 @@ fn note_shared_vertex(shared: &mut [bool; 2], at_one_point: &[u32], edges: &[Inp
     }
 }
 
+/// Runs of vertices with one x longer than this are sorted by y as the x's are sorted, by value (see [`sort`]);
+/// shorter ones by comparison.
+const SORTED_BY_VALUE: usize = 64;
+
 /// The initial events: two per input edge, created in the order of [`event_order`], so that the sweep reads them
 /// front to back.
 ///
@@ -325,11 +329,16 @@ pub(crate) fn initial_events(
     let mut at_one_point = Vec::new();
     for same_x in vertices.chunk_by_mut(|a, b| a.0 == b.0) {
         if same_x.len() > 1 {
-            // Long runs share an x (a column of a grid): by y as keys again.
+            // Long runs share an x (a column of a grid): by y as keys again, by value as the x's were where the
+            // run is long.
             for (key, ends) in same_x.iter_mut() {
                 *key = ordered_bits(point(ends[0])[1]);
             }
-            same_x.sort_unstable_by_key(|&(y, _)| y);
+            if same_x.len() <= SORTED_BY_VALUE {
+                same_x.sort_unstable_by_key(|&(y, _)| y);
+            } else if !same_x.is_sorted_by_key(|&(y, _)| y) {
+                sort::sort_by_key(same_x, &mut scratch.sorted_keys, &mut scratch.buckets);
+            }
         }
         for same_point in same_x.chunk_by(|a, b| a.0 == b.0) {
             // (A spike's two edges, merged where another ring meets one of its ends, may meet alone at the other:
@@ -492,9 +501,20 @@ mod tests {
             ring(&[[1.0, -1.0], [1.0, 3.0], [0.5, 3.0]]),
             ring(&[[1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]]),
         ]);
+        // A column of 70 squares listed out of order, with 140 vertices at each of two x's: more than are sorted by
+        // comparison (`SORTED_BY_VALUE`).
+        let column = MultiPolygon::from_coordinates(
+            &(0..70)
+                .map(|i| {
+                    let y = f64::from((i * 37) % 70);
+                    ring(&[[10.0, y], [11.0, y], [11.0, y + 1.0], [10.0, y + 1.0]])
+                })
+                .collect::<Vec<_>>(),
+        );
         let mut edges = Vec::new();
         add_edges(&mut edges, &subject, 0, 0..subject.0.len());
         add_edges(&mut edges, &clipping, 1, 0..clipping.0.len());
+        add_edges(&mut edges, &column, 0, 0..column.0.len());
         let exact = Exact::default();
         let events = initial_events(&edges, &exact, &mut Default::default(), Vec::new(), false);
         assert_eq!(events.len(), 2 * edges.len());

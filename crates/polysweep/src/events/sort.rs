@@ -34,7 +34,7 @@ fn value(key: u64) -> f64 {
 /// Each item is an integer that orders like a coordinate, and what it stands for. `spare` and `bucket_of_item` are
 /// working memory (see [`crate::workspace`]): what they hold is overwritten.
 pub(crate) fn sort_by_key<T: Copy + Default>(
-    items: &mut Vec<(u64, T)>,
+    items: &mut [(u64, T)],
     spare: &mut Vec<(u64, T)>,
     bucket_of_item: &mut Vec<u32>,
 ) {
@@ -79,7 +79,7 @@ pub(crate) fn sort_by_key<T: Copy + Default>(
             sorted[range[0] as usize..range[1] as usize].sort_unstable_by_key(|&(key, _)| key);
         }
     }
-    std::mem::swap(items, sorted);
+    items.copy_from_slice(sorted);
 }
 
 #[cfg(test)]
