@@ -123,7 +123,10 @@ pub(crate) fn plan(
     }
     // A subject polygon inside one convex clipping polygon, away from the others, cannot change a union or a
     // difference either (exact together with leaving out clipping polygons as above).
-    if operation != Operation::Intersection && shortcuts.prune_inside_convex {
+    if operation != Operation::Intersection
+        && shortcuts.prune_inside_convex
+        && some_sample_within_one(subject_boxes, clipping_boxes, margin)
+    {
         let inside_clipping =
             inside_one_convex(clipping, clipping_boxes, subject_boxes, fill_rule, margin);
         for (swept, inside) in plan.subject.iter_mut().zip(inside_clipping) {
@@ -175,8 +178,12 @@ fn inside_subject(
     // half the subject's vertices, they a quarter (measured on Table 1's data, see docs/benchmarks.md).
     let share = if operation == Operation::Union { 2 } else { 4 };
     let subject_vertices = subject.vertex_count();
+    // A union leaves out only clipping polygons inside the subject, away from its edges: each inside one subject
+    // polygon, and so within its box.
     if clipping.0.len() < MIN_POLYGONS_TO_JUDGE
         || share * clipping.vertex_count() < subject_vertices
+        || (operation == Operation::Union
+            && !some_sample_within_one(clipping_boxes, subject_boxes, margin))
     {
         return vec![None; clipping.0.len()];
     }
@@ -187,6 +194,22 @@ fn inside_subject(
     (clipping_boxes.iter())
         .map(|b| (known.throughout(&b.grown(margin))).map(|w| fill_rule.is_inside(w)))
         .collect()
+}
+
+/// Polygons sampled by a shortcut before it does its work (see [`some_sample_within_one`]).
+const SAMPLES: usize = 16;
+
+/// Does one at least of a sample of `judged` boxes, grown by `margin`, lie within one of `boxes`? A polygon left out
+/// for lying inside one polygon of the other operand, or inside it away from its edges, lies within that polygon's
+/// box; where none of the sample does, the polygons are taken to lie across each other (a board, a parcel map), and
+/// the shortcut is not tried. Only a matter of speed: `false` means "sweep them all".
+fn some_sample_within_one(judged: &[Bounds], boxes: &[Bounds], margin: f64) -> bool {
+    let step = judged.len().div_ceil(SAMPLES).max(1);
+    (judged.iter().step_by(step)).any(|b| {
+        boxes
+            .iter()
+            .any(|container| b.grown(margin).within(container))
+    })
 }
 
 #[cfg(test)]

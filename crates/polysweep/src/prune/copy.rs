@@ -2,6 +2,7 @@
 //! the subject for an intersection, polygons apart from all others for the other operations.
 
 use super::grid::apart;
+use super::SAMPLES;
 use crate::exact::Line;
 use crate::geometry::{
     closed, next_around, open_len, ring_area, MultiPolygon, Point, Polygon, Ring,
@@ -99,9 +100,8 @@ pub(crate) fn copied_apart(
     (copied, polygons)
 }
 
-/// Candidates of [`copied_apart`] looked at before its index of all boxes is made, and how many polygons before and
-/// after each in either operand's list are looked at for one whose box meets it.
-const SAMPLES: usize = 16;
+/// How many polygons before and after a sampled candidate of [`copied_apart`] in either operand's list are looked at
+/// for one whose box meets it.
 const NEAR_IN_LIST: usize = 64;
 
 /// Might any of `asked` (the subject's polygons, then the clipping operand's) be apart from all others? Told from a
