@@ -24,7 +24,7 @@ mod queue;
 mod sort;
 
 pub(crate) use queue::{EventQueue, Head};
-pub(crate) use sort::{ordered_bits, sort_by_key};
+pub(crate) use sort::{ordered_bits, sort_by_key, Buckets};
 
 /// 40 bytes: the events are the sweep's largest array, read front to back and, for an edge's other end or a
 /// neighbour's, far from where the sweep is, so their size is most of its memory traffic. (Larger events made the
@@ -221,13 +221,12 @@ pub(crate) fn event_order(
 /// holds is overwritten.
 #[derive(Default)]
 pub(crate) struct SortScratch {
-    /// A key and the endpoints it stands for, and the sorted copy.
+    /// A key and the endpoints it stands for, and the sort's working memory.
     pub keys: Vec<(u64, [u32; 2])>,
-    pub sorted_keys: Vec<(u64, [u32; 2])>,
-    /// The endpoints in event order, each endpoint's place in it, and the sort's buckets.
+    pub buckets: Buckets<[u32; 2]>,
+    /// The endpoints in event order, and each endpoint's place in it.
     pub order: Vec<u32>,
     pub position: Vec<u32>,
-    pub buckets: Vec<u32>,
     /// Per operand: more than two of its endpoints at one point, rings of it that touch or meet there or a ring
     /// that passes twice through it (read by [`crate::structure`], whose watched sweeps never merge identical
     /// edges: noted only then, as on boards and parcel maps every inner corner is such a point).
@@ -322,7 +321,7 @@ pub(crate) fn initial_events(
         chain_start = j + 1;
     }
     // Keys that tie are ordered again below.
-    sort::sort_by_key(vertices, &mut scratch.sorted_keys, &mut scratch.buckets);
+    sort::sort_by_key(vertices, &mut scratch.buckets);
     let order = &mut scratch.order;
     order.clear();
     order.reserve(2 * edges.len());
@@ -337,7 +336,7 @@ pub(crate) fn initial_events(
             if same_x.len() <= SORTED_BY_VALUE {
                 same_x.sort_unstable_by_key(|&(y, _)| y);
             } else if !same_x.is_sorted_by_key(|&(y, _)| y) {
-                sort::sort_by_key(same_x, &mut scratch.sorted_keys, &mut scratch.buckets);
+                sort::sort_by_key(same_x, &mut scratch.buckets);
             }
         }
         for same_point in same_x.chunk_by(|a, b| a.0 == b.0) {

@@ -2,7 +2,7 @@
 
 use crate::edges::{InputEdge, Operand};
 use crate::error::{Error, Location};
-use crate::events::{ordered_bits, sort_by_key};
+use crate::events::{ordered_bits, sort_by_key, Buckets};
 use crate::exact::Line;
 use crate::geometry::{
     larger, next_around, open_len, smaller, MultiPolygon, Point, Polygon, MAX_COORDINATE,
@@ -180,7 +180,7 @@ pub(crate) fn left_to_right(boxes: &[Bounds], keep: impl Fn(usize) -> bool) -> V
         .filter(|&p| keep(p))
         .map(|p| (ordered_bits(boxes[p].min[0]), p as u32))
         .collect();
-    sort_by_key(&mut order, &mut Vec::new(), &mut Vec::new());
+    sort_by_key(&mut order, &mut Buckets::default());
     order.into_iter().map(|(_, p)| p as usize).collect()
 }
 

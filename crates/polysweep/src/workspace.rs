@@ -37,10 +37,9 @@ impl Workspace {
         of(&self.edges)
             + of(&self.events)
             + of(&sort.keys)
-            + of(&sort.sorted_keys)
+            + sort.buckets.bytes()
             + of(&sort.order)
             + of(&sort.position)
-            + of(&sort.buckets)
             + of(&self.vertices)
             + of(&self.result)
     }

@@ -26,18 +26,33 @@ fn value(key: u64) -> f64 {
     })
 }
 
+/// The working memory of [`sort_by_key`], kept from one sort to the next: what it holds is overwritten.
+#[derive(Default)]
+pub(crate) struct Buckets<T> {
+    /// The items in sorted order, before they are copied back.
+    sorted: Vec<(u64, T)>,
+    /// Each item's bucket.
+    of_item: Vec<u32>,
+    /// Where each bucket begins in the sorted order, and where its next item goes.
+    starts: Vec<u32>,
+    next: Vec<u32>,
+}
+
+impl<T> Buckets<T> {
+    /// The bytes it holds (see [`crate::workspace`]).
+    pub fn bytes(&self) -> usize {
+        self.sorted.capacity() * std::mem::size_of::<(u64, T)>()
+            + 4 * (self.of_item.capacity() + self.starts.capacity() + self.next.capacity())
+    }
+}
+
 /// Sorts `items` by key (not stably: ties are ordered again by the caller).
 ///
 /// A key's bucket is its value's place between the smallest and the largest, scaled to the number of buckets and
 /// rounded down. Every step of that (a subtraction, a product with a positive factor, rounding down) is monotone
 /// in floating point too, so a smaller key never lands in a later bucket, and sorting each bucket sorts them all.
-/// Each item is an integer that orders like a coordinate, and what it stands for. `spare` and `bucket_of_item` are
-/// working memory (see [`crate::workspace`]): what they hold is overwritten.
-pub(crate) fn sort_by_key<T: Copy + Default>(
-    items: &mut [(u64, T)],
-    spare: &mut Vec<(u64, T)>,
-    bucket_of_item: &mut Vec<u32>,
-) {
+/// Each item is an integer that orders like a coordinate, and what it stands for.
+pub(crate) fn sort_by_key<T: Copy + Default>(items: &mut [(u64, T)], memory: &mut Buckets<T>) {
     let (Some(low), Some(high)) = (
         items.iter().map(|&(key, _)| key).min(),
         items.iter().map(|&(key, _)| key).max(),
@@ -53,9 +68,14 @@ pub(crate) fn sort_by_key<T: Copy + Default>(
     let scale = (buckets - 1) as f64 / (high - low);
     let bucket = |key: u64| (((value(key) - low) * scale) as usize).min(buckets - 1);
     // `starts[b]`: where bucket `b` begins in the sorted order, once summed up.
-    let mut starts = vec![0u32; buckets + 1];
-    // Each item's bucket, worked out once for the count and the move.
-    let of_item = bucket_of_item;
+    let Buckets {
+        sorted,
+        of_item,
+        starts,
+        next,
+    } = memory;
+    starts.clear();
+    starts.resize(buckets + 1, 0);
     of_item.clear();
     of_item.extend(items.iter().map(|&(key, _)| {
         let b = bucket(key);
@@ -65,10 +85,10 @@ pub(crate) fn sort_by_key<T: Copy + Default>(
     for b in 1..=buckets {
         starts[b] += starts[b - 1];
     }
-    let sorted = spare;
     sorted.clear();
     sorted.resize(items.len(), (0, T::default()));
-    let mut next = starts.clone();
+    next.clear();
+    next.extend_from_slice(starts);
     for (&item, &b) in items.iter().zip(of_item.iter()) {
         let slot = &mut next[b as usize];
         sorted[*slot as usize] = item;
@@ -138,7 +158,7 @@ mod tests {
                 .map(|(i, &v)| (ordered_bits(v), i as u32))
                 .collect();
             let mut expected = items.clone();
-            sort_by_key(&mut items, &mut Vec::new(), &mut Vec::new());
+            sort_by_key(&mut items, &mut Buckets::default());
             expected.sort_unstable_by_key(|&(key, _)| key);
             let keys = |items: &[(u64, u32)]| items.iter().map(|&(key, _)| key).collect::<Vec<_>>();
             assert_eq!(keys(&items), keys(&expected), "{} values", values.len());
