@@ -381,8 +381,12 @@ pub(crate) fn initial_events(
                 // The right ends of edges merged at their left ends make no events.
                 at_one_point.retain(|&end| end % 2 == 1 || merged_into[end as usize / 2] == NONE);
             }
-            at_one_point
-                .sort_unstable_by(|&a, &b| order_at_point(exact, &at_point(a), &at_point(b)));
+            // (Right ends before left ones, as `order_at_point` begins, told without reading the edges.)
+            at_one_point.sort_unstable_by(|&a, &b| {
+                (a % 2)
+                    .cmp(&(b % 2))
+                    .then_with(|| order_at_point(exact, &at_point(a), &at_point(b)))
+            });
             if merge_identical {
                 any_merged |= merge_at_point(&mut at_one_point, edges, exact, merged_into);
             }
