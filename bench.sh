@@ -14,6 +14,7 @@ web/build.sh
 node web/bench/wasm.mjs
 node web/bench/dense.mjs
 # Lines and layers (issue 26): 10,000 parcels × 100 zones, polysweep's layer overlay beside GEOS per pair (shapely,
-# in the venv test.sh makes) and turf's intersect in a loop; prints its own table, and target/bench/layers.json.
+# in the venv web/python.sh makes) and turf's intersect in a loop; prints its own table, and target/bench/layers.json.
+source web/python.sh
 node web/bench/layers.mjs
 node web/bench/report.mjs

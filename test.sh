@@ -44,14 +44,7 @@ node --test web/test/*.test.mjs
 npx --no-install tsc -p web/tsconfig.json
 
 # --- the built package against GEOS (shapely, in a venv of its own) and an exact rational reference ---
-if [ ! -x .venv/bin/python ]; then
-  python3 -m venv .venv || {
-    sudo=""; [ "$(id -u)" -ne 0 ] && sudo=sudo
-    $sudo apt-get install -y -qq python3-venv && python3 -m venv .venv
-  }
-fi
-.venv/bin/python -c 'import shapely, sys; sys.exit(shapely.__version__ != "2.2.0")' 2>/dev/null \
-  || .venv/bin/pip install --quiet shapely==2.2.0
+source web/python.sh
 .venv/bin/python tests/differential/run.py
 .venv/bin/python tests/differential/lines_and_layers.py
 # The layer-overlay benchmark at its small size (it asserts nothing: it must run, and prints its agreement with GEOS).
