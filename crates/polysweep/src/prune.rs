@@ -206,9 +206,8 @@ const SAMPLES: usize = 16;
 fn some_sample_within_one(judged: &[Bounds], boxes: &[Bounds], margin: f64) -> bool {
     let step = judged.len().div_ceil(SAMPLES).max(1);
     (judged.iter().step_by(step)).any(|b| {
-        boxes
-            .iter()
-            .any(|container| b.grown(margin).within(container))
+        let grown = b.grown(margin);
+        boxes.iter().any(|container| grown.within(container))
     })
 }
 

@@ -31,7 +31,9 @@ impl Line {
     }
 }
 
-/// A point of the sweep: an input vertex, or the exact crossing of two input segments' lines.
+/// A point of the sweep: an input vertex, or the exact crossing of two input segments' lines. A crossing whose
+/// coordinates are both floats is made like an input vertex (see [`super::Exact::crossing`]): below, "input vertex"
+/// means any point at a pair of floats.
 ///
 /// Packed to 20 bytes (alignment 4), half of an event (see [`crate::events::SweepEvent`], the sweep's largest
 /// array), where a 24-byte point would make it 48. Its fields are read by value, never by reference.

@@ -88,16 +88,22 @@ pub(crate) fn copied_apart(
             continue;
         }
         if let Some(ring) = as_written(&polygon.exterior, fill_rule, margin) {
-            let (operand, p) = if i < subject.len() {
-                (0, i)
-            } else {
-                (1, i - subject.len())
-            };
+            let (operand, p) = operand_and_index(i, subject.len());
             copied[operand][p] = true;
             polygons.push(Polygon::new(ring, Vec::new()));
         }
     }
     (copied, polygons)
+}
+
+/// The operand and the index in it of polygon `i` of the two operands listed one after the other, the subject's
+/// `subject_len` first.
+fn operand_and_index(i: usize, subject_len: usize) -> (usize, usize) {
+    if i < subject_len {
+        (0, i)
+    } else {
+        (1, i - subject_len)
+    }
 }
 
 /// How many polygons before and after a sampled candidate of [`copied_apart`] in either operand's list are looked at
@@ -110,17 +116,10 @@ const NEAR_IN_LIST: usize = 64;
 /// parcel map, tiles that overlap), where indexing all boxes would cost an eighth of the sweep and find nothing
 /// apart. Only a matter of speed: `false` means "sweep them all".
 fn any_sample_may_be_apart(boxes: [&[Bounds]; 2], asked: &[bool], margin: f64) -> bool {
-    let candidates: Vec<usize> = (0..asked.len()).filter(|&i| asked[i]).collect();
-    if candidates.is_empty() {
-        return false;
-    }
-    let step = candidates.len().div_ceil(SAMPLES);
-    candidates.iter().step_by(step).any(|&i| {
-        let (own, p) = if i < boxes[0].len() {
-            (0, i)
-        } else {
-            (1, i - boxes[0].len())
-        };
+    let candidates = || (0..asked.len()).filter(|&i| asked[i]);
+    let step = candidates().count().div_ceil(SAMPLES).max(1);
+    candidates().step_by(step).any(|i| {
+        let (own, p) = operand_and_index(i, boxes[0].len());
         let grown = boxes[own][p].grown(margin);
         // Its place in its own list, and the same share of the way along the other.
         let share = p as f64 / boxes[own].len() as f64;
