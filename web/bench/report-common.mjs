@@ -84,3 +84,15 @@ export function niceBound(t, up) {
   const candidates = [1, 2, 5, 10].map((m) => m * 10 ** e);
   return up ? candidates.find((c) => c >= t * 0.999) : [...candidates].reverse().find((c) => c <= t * 1.001);
 }
+
+/** The 1-2-5 steps from `lo` to `hi` (a log axis's grid lines), each with its mantissa `m` (1, 2 or 5). */
+export function logSteps(lo, hi) {
+  const steps = [];
+  for (let e = Math.floor(Math.log10(lo)); e <= Math.log10(hi) + 1e-9; e++) {
+    for (const m of [1, 2, 5]) {
+      const value = m * 10 ** e;
+      if (value <= hi * 1.0001 && value >= lo * 0.9999) steps.push({ value, m });
+    }
+  }
+  return steps;
+}

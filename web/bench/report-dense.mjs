@@ -4,7 +4,8 @@
 
 import { loadDenseIndex } from './data.mjs';
 import {
-  INFO_ENGINES, NATIVE_PEERS, WASM_PEERS, areaNote, cell, enginesOf, escapeXml, fastestPeer, ms, niceBound, ok, ratio, table,
+  INFO_ENGINES, NATIVE_PEERS, WASM_PEERS, areaNote, cell, enginesOf, escapeXml, fastestPeer, logSteps, ms, niceBound, ok, ratio,
+  table,
 } from './report-common.mjs';
 
 /** Issue 25's target: polysweep at most this times the fastest peer's time, natively and in Node, at each size. */
@@ -255,14 +256,10 @@ export function densePanel(dense, top, W) {
   s.push(`<line x1="${plot.left + 440}" y1="${ly - 4}" x2="${plot.left + 474}" y2="${ly - 4}" stroke="#1e8449" stroke-width="1.6" stroke-dasharray="6 4"/>`);
   s.push(`<text x="${plot.left + 482}" y="${ly}">target ${DENSE_TARGET}× (below 1×: polysweep is faster)</text>`);
   // Grid on the 1-2-5 steps.
-  for (let e = Math.floor(Math.log10(lo)); e <= Math.log10(hi) + 1e-9; e++) {
-    for (const m of [1, 2, 5]) {
-      const r = m * 10 ** e;
-      if (r > hi * 1.0001 || r < lo * 0.9999) continue;
-      const yy = y(r).toFixed(1);
-      s.push(`<line x1="${plot.left}" y1="${yy}" x2="${plot.right}" y2="${yy}" stroke="${r === 1 ? '#333333' : '#e4e4e4'}"/>`);
-      s.push(`<text x="${plot.left - 6}" y="${(+yy + 4).toFixed(1)}" text-anchor="end" fill="${m === 1 ? '#000' : '#777'}">${r}×</text>`);
-    }
+  for (const { value: r, m } of logSteps(lo, hi)) {
+    const yy = y(r).toFixed(1);
+    s.push(`<line x1="${plot.left}" y1="${yy}" x2="${plot.right}" y2="${yy}" stroke="${r === 1 ? '#333333' : '#e4e4e4'}"/>`);
+    s.push(`<text x="${plot.left - 6}" y="${(+yy + 4).toFixed(1)}" text-anchor="end" fill="${m === 1 ? '#000' : '#777'}">${r}×</text>`);
   }
   const yt = y(DENSE_TARGET).toFixed(1);
   s.push(`<line x1="${plot.left}" y1="${yt}" x2="${plot.right}" y2="${yt}" stroke="#1e8449" stroke-width="1.6" stroke-dasharray="6 4"/>`);

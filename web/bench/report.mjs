@@ -15,8 +15,8 @@ import { existsSync, mkdirSync, readFileSync, statSync, writeFileSync } from 'no
 import { join, relative } from 'node:path';
 import { BENCH_DIR, FULL_N, REFERENCE_AREAS, ROOT } from './data.mjs';
 import {
-  AGREEMENT, INFO_ENGINES, NATIVE_PEERS, WASM_PEERS, areaNote, cell, enginesOf, escapeXml, fastestPeer, ms, niceBound, ok, ratio,
-  table,
+  AGREEMENT, INFO_ENGINES, NATIVE_PEERS, WASM_PEERS, areaNote, cell, enginesOf, escapeXml, fastestPeer, logSteps, ms, niceBound,
+  ok, ratio, table,
 } from './report-common.mjs';
 import { DENSE_PANEL_H, denseData, densePanel, denseSection, denseTargets } from './report-dense.mjs';
 
@@ -419,16 +419,12 @@ function svgChart(native, wasm, dense) {
   s.push(`<rect width="${W}" height="${H}" fill="#ffffff"/>`);
   s.push(`<text x="${(plot.left + plot.right) / 2}" y="26" text-anchor="middle" font-size="15" font-weight="bold">Land ∩ N squares: median time (log-log)</text>`);
   // Grid and ticks.
-  for (let e = Math.floor(Math.log10(tMin)); e <= Math.log10(tMax) + 1e-9; e++) {
-    for (const m of [1, 2, 5]) {
-      const t = m * 10 ** e;
-      if (t > tMax * 1.0001 || t < tMin * 0.9999) continue;
-      const yy = y(t).toFixed(1);
-      s.push(`<line x1="${plot.left}" y1="${yy}" x2="${plot.right}" y2="${yy}" stroke="${m === 1 ? '#cccccc' : '#eeeeee'}"/>`);
-      if (m === 1 || tMax / tMin <= 1e4) {
-        const text = t >= 1000 ? `${t / 1000} s` : `${t} ms`;
-        s.push(`<text x="${plot.left - 6}" y="${(+yy + 4).toFixed(1)}" text-anchor="end" fill="${m === 1 ? '#000' : '#777'}">${text}</text>`);
-      }
+  for (const { value: t, m } of logSteps(tMin, tMax)) {
+    const yy = y(t).toFixed(1);
+    s.push(`<line x1="${plot.left}" y1="${yy}" x2="${plot.right}" y2="${yy}" stroke="${m === 1 ? '#cccccc' : '#eeeeee'}"/>`);
+    if (m === 1 || tMax / tMin <= 1e4) {
+      const text = t >= 1000 ? `${t / 1000} s` : `${t} ms`;
+      s.push(`<text x="${plot.left - 6}" y="${(+yy + 4).toFixed(1)}" text-anchor="end" fill="${m === 1 ? '#000' : '#777'}">${text}</text>`);
     }
   }
   const ticks = [...new Set(lines.flatMap((l) => l.points.map(([n]) => n)))].sort((a, b) => a - b);
