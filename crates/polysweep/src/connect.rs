@@ -77,47 +77,53 @@ fn next_edge(
 }
 
 /// Rings as lists of edge indices, one after the other in one vector (rather than a vector each: a result can
-/// have tens of thousands of rings).
+/// have tens of thousands of rings). Indices here and in the walk's tables are `u32`, as the sweep's are: these
+/// tables are as long as the result, which can be millions of edges.
 struct Rings {
-    edges: Vec<usize>,
+    edges: Vec<u32>,
     /// Where each ring's edges begin in `edges`, and where the last one ends.
-    starts: Vec<usize>,
+    starts: Vec<u32>,
 }
 
 impl Rings {
-    fn push(&mut self, ring: &[usize]) {
+    fn push(&mut self, ring: &[u32]) {
         if self.starts.is_empty() {
             self.starts.push(0);
         }
         self.edges.extend_from_slice(ring);
-        self.starts.push(self.edges.len());
+        self.starts.push(self.edges.len() as u32);
     }
 
     fn len(&self) -> usize {
         self.starts.len().saturating_sub(1)
     }
 
-    fn iter(&self) -> impl Iterator<Item = &[usize]> {
-        self.starts.windows(2).map(|w| &self.edges[w[0]..w[1]])
+    fn ring(&self, r: usize) -> &[u32] {
+        &self.edges[self.starts[r] as usize..self.starts[r + 1] as usize]
+    }
+
+    fn iter(&self) -> impl Iterator<Item = &[u32]> {
+        (0..self.len()).map(|r| self.ring(r))
     }
 }
 
 /// Walks the result edges into simple rings, each as its list of edge indices; with `class` (one per edge, or
 /// none), each ring of edges of one class.
 fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge], class: &[u32]) -> Rings {
-    // Edges leaving each vertex, bucketed (counting sort by `from`).
-    let mut first_out = vec![0usize; vertex_count + 1];
+    // Edges leaving each vertex, bucketed (counting sort by `from`): each vertex's edges are filled in from the
+    // end of its range, which leaves `first_out` at the range's beginning.
+    let mut first_out = vec![0u32; vertex_count + 1];
     for e in edges {
-        first_out[e.from as usize + 1] += 1;
+        first_out[e.from as usize] += 1;
     }
     for v in 0..vertex_count {
         first_out[v + 1] += first_out[v];
     }
-    let mut outgoing = vec![0usize; edges.len()];
-    let mut fill = first_out.clone();
-    for (i, e) in edges.iter().enumerate() {
-        outgoing[fill[e.from as usize]] = i;
-        fill[e.from as usize] += 1;
+    let mut outgoing = vec![0u32; edges.len()];
+    for (i, e) in edges.iter().enumerate().rev() {
+        let slot = &mut first_out[e.from as usize];
+        *slot -= 1;
+        outgoing[*slot as usize] = i as u32;
     }
     // Edges that rounding shrank to a point are no part of any ring.
     let mut used: Vec<bool> = edges.iter().map(|e| e.from == e.to).collect();
@@ -128,8 +134,9 @@ fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge], class: &[
         starts: Vec::new(),
     };
     // The path walked from `start`: its vertices and edges (kept from one start to the next, for their room).
-    let (mut path_vertices, mut path_edges): (Vec<u32>, Vec<usize>) = (Vec::new(), Vec::new());
+    let (mut path_vertices, mut path_edges): (Vec<u32>, Vec<u32>) = (Vec::new(), Vec::new());
     for &start in &outgoing {
+        let start = start as usize;
         if used[start] {
             continue;
         }
@@ -140,7 +147,7 @@ fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge], class: &[
         let mut current = start;
         loop {
             used[current] = true;
-            path_edges.push(current);
+            path_edges.push(current as u32);
             let v = edges[current].to;
             let at = position_on_path[v as usize];
             if at != NONE {
@@ -159,10 +166,10 @@ fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge], class: &[
                 position_on_path[v as usize] = path_vertices.len() as u32;
                 path_vertices.push(v);
             }
-            let range = first_out[v as usize]..first_out[v as usize + 1];
+            let range = first_out[v as usize] as usize..first_out[v as usize + 1] as usize;
             let same_class = |i: usize| class.is_empty() || class[i] == class[current];
-            let candidates =
-                (outgoing[range].iter().copied()).filter(|&i| !used[i] && same_class(i));
+            let candidates = (outgoing[range].iter().map(|&i| i as usize))
+                .filter(|&i| !used[i] && same_class(i));
             match next_edge(lines, edges, current, candidates) {
                 Some(next) => current = next,
                 // Cannot happen: every vertex has as many result edges in as out. Drop the open path.
@@ -237,13 +244,7 @@ pub(crate) fn connect_classes(
     }
     let lines = Lines { exact, input };
     let rings = walk_rings(lines, points.len(), edges, class);
-    let class_of_ring = |ring: &[usize]| class.get(ring[0]).copied().unwrap_or(0);
-    let mut ring_of_edge = vec![NONE; edges.len()];
-    for (r, ring) in rings.iter().enumerate() {
-        for &e in ring {
-            ring_of_edge[e] = r as u32;
-        }
-    }
+    let class_of_ring = |ring: &[u32]| class.get(ring[0] as usize).copied().unwrap_or(0);
     // Each ring as it is written out: its rounded vertices, closed (the first repeated last). Made once, and read
     // below instead of the edges, which lie scattered in memory.
     let mut written: Vec<Ring> = rings
@@ -251,20 +252,10 @@ pub(crate) fn connect_classes(
         .map(|ring| {
             let mut out: Ring = Vec::with_capacity(ring.len() + 1);
             for &e in ring {
-                out.push(points[edges[e].from as usize]);
+                out.push(points[edges[e as usize].from as usize]);
             }
             out.push(out[0]);
             out
-        })
-        .collect();
-    // Each ring's edges into and out of its lowest-leftmost vertex, and its orientation there.
-    let lexicographic = |a: &Point, b: &Point| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y));
-    let leftmost: Vec<(usize, usize)> = (rings.iter().zip(&written))
-        .map(|(ring, points)| {
-            let k = (0..ring.len())
-                .min_by(|&i, &j| lexicographic(&points[i], &points[j]))
-                .expect("rings are not empty");
-            (ring[(k + ring.len() - 1) % ring.len()], ring[k])
         })
         .collect();
     // Orientation of the rounded ring (its signed area). Where rounding could have flipped it (a ring thin enough),
@@ -280,9 +271,10 @@ pub(crate) fn connect_classes(
                 return rounded_turn;
             }
             let k = (0..ring.len())
-                .min_by_key(|&k| exact_ends[ring[k]].0)
+                .min_by_key(|&k| exact_ends[ring[k] as usize].0)
                 .expect("rings are not empty");
-            let (incoming, outgoing) = (ring[(k + ring.len() - 1) % ring.len()], ring[k]);
+            let [incoming, outgoing] =
+                [ring[(k + ring.len() - 1) % ring.len()], ring[k]].map(|e| e as usize);
             let exact_turn = lines.cross(&edges[incoming], &edges[outgoing]);
             // Where rounding merged vertices, the two edges need not meet at one exact point (an edge that shrank
             // to nothing was between them, and they can even run back along each other), or the ring can pass
@@ -292,7 +284,7 @@ pub(crate) fn connect_classes(
             // have been summed wrong (a sliver), and its exact turn is its orientation.
             let written_exactly = || {
                 (ring.iter()).all(|&e| {
-                    let v = &vertices[exact_ends[e].0 as usize];
+                    let v = &vertices[exact_ends[e as usize].0 as usize];
                     v.is_exact(0) && v.is_exact(1)
                 })
             };
@@ -307,10 +299,31 @@ pub(crate) fn connect_classes(
         })
         .collect();
     let is_shell = |r: u32| turn[r as usize] == Ordering::Greater;
+    let is_hole = |r: usize| turn[r] == Ordering::Less && rings.ring(r).len() >= 3;
+    // Each edge's ring, read only to place holes (so made only where there are any).
+    let mut ring_of_edge = Vec::new();
+    if (0..rings.len()).any(is_hole) {
+        ring_of_edge = vec![NONE; edges.len()];
+        for (r, ring) in rings.iter().enumerate() {
+            for &e in ring {
+                ring_of_edge[e as usize] = r as u32;
+            }
+        }
+    }
     // The ring of the result edge below ring `r`'s lowest edge at its leftmost vertex (asked for holes only, so
-    // the edge below is looked up only for them).
+    // the edge below is looked up only for them): the edges into and out of its lowest-leftmost vertex.
     let ring_below = |r: u32| {
-        let (i, o) = leftmost[r as usize];
+        let ring = rings.ring(r as usize);
+        let at = |k: usize| &points[edges[ring[k] as usize].from as usize];
+        let k = (0..ring.len())
+            .min_by(|&i, &j| {
+                at(i)
+                    .x
+                    .total_cmp(&at(j).x)
+                    .then(at(i).y.total_cmp(&at(j).y))
+            })
+            .expect("rings are not empty");
+        let [i, o] = [ring[(k + ring.len() - 1) % ring.len()], ring[k]].map(|e| e as usize);
         [edges[i].below, edges[o].below]
             .into_iter()
             .filter(|&b| b != NONE)
@@ -335,7 +348,7 @@ pub(crate) fn connect_classes(
         }
     }
     for (r, ring) in rings.iter().enumerate() {
-        if turn[r] != Ordering::Less || ring.len() < 3 {
+        if !is_hole(r) {
             continue; // a shell, or a ring that rounding flattened
         }
         // Walk down through holes to a shell; at most one step per ring, so this always ends.
