@@ -78,8 +78,8 @@ impl SweepEvent {
 
     /// The left or right event of input edge `segment`, `edge`, whose other event is `other`, also an initial one.
     pub fn initial(edge: &InputEdge, segment: u32, left: bool, other: EventId) -> Self {
-        let mut winding = [0; 2];
-        winding[edge.operand as usize] = edge.winding;
+        // (Both words made at once: a store of one, indexed, read back as a pair at once, stalls the load.)
+        let winding = select_unpredictable(edge.operand == 0, [edge.winding, 0], [0, edge.winding]);
         let point = SweepPoint::input(select_unpredictable(left, edge.line.a, edge.line.b));
         let mut event = Self::unprocessed(point, left, segment, winding, other);
         event.segment_and_side |= OTHER_AT_INPUT_END;

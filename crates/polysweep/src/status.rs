@@ -12,6 +12,7 @@
 //! by handle means removal never depends on comparisons made later.
 
 use crate::edges::{EventId, NONE};
+use std::hint::select_unpredictable;
 
 #[derive(Clone, Copy)]
 struct Node<K> {
@@ -116,9 +117,10 @@ impl<K: Copy> Status<K> {
     fn attach(&mut self, id: u32, parent: u32, side: usize) {
         self.nodes[parent as usize].children[side] = id;
         self.nodes[id as usize].parent = parent;
-        // A new leaf lies between its parent and the parent's neighbour on that side.
-        let mut neighbours = [parent; 2];
-        neighbours[side] = self.nodes[parent as usize].neighbours[side];
+        // A new leaf lies between its parent and the parent's neighbour on that side. (The pair made at once, not
+        // by a store to one of its halves, which stalls the pair's read that follows.)
+        let beyond = self.nodes[parent as usize].neighbours[side];
+        let neighbours = select_unpredictable(side == 0, [beyond, parent], [parent, beyond]);
         self.link(id, neighbours);
         while let Some(parent) = self.parent(id) {
             if self.nodes[id as usize].priority >= self.nodes[parent as usize].priority {

@@ -34,19 +34,21 @@ type Double = (f64, f64);
 /// The correctly rounded coordinates of the crossing of the lines of `l` and `m` (not parallel), and which of them
 /// are known to be exact; `None` when float arithmetic cannot prove the rounding.
 pub(super) fn rounded_crossing(l: &Line, m: &Line) -> Option<([f64; 2], [bool; 2])> {
-    let mut approx = [0.0; 2];
-    let mut exact = [false; 2];
-    for axis in 0..2 {
-        if let Some(line) = [l, m].into_iter().find(|line| line.a[axis] == line.b[axis]) {
-            (approx[axis], exact[axis]) = (line.a[axis] + 0.0, true); // -0 as 0, as the exact path gives
-        }
-    }
-    if exact == [true, true] {
+    // A coordinate is exact where one of the lines is parallel to the other axis: it is that line's. (Made as
+    // whole values, not stored into arrays by halves, which stalls reading the arrays back whole.)
+    let fixed = [0, 1].map(|axis| {
+        let parallel = [l, m].into_iter().find(|line| line.a[axis] == line.b[axis]);
+        parallel.map(|line| line.a[axis] + 0.0) // -0 as 0, as the exact path gives
+    });
+    if let [Some(x), Some(y)] = fixed {
         // A vertical line crossing a horizontal one, as on grids: no parameter to estimate.
-        return Some((approx, exact));
+        return Some(([x, y], [true, true]));
     }
     let along = parameters(l, m)?;
-    for axis in (0..2).filter(|&axis| !exact[axis]) {
+    let coordinate = |axis: usize| {
+        if let Some(v) = fixed[axis] {
+            return Some(v);
+        }
         // λ's error shows in the coordinate multiplied by the line's extent along the axis.
         let spread = |i: usize| {
             let line = [l, m][i];
@@ -54,9 +56,9 @@ pub(super) fn rounded_crossing(l: &Line, m: &Line) -> Option<([f64; 2], [bool; 2
         };
         let base = if spread(0) <= spread(1) { 0 } else { 1 };
         let line = [l, m][base];
-        approx[axis] = rounded(line.a[axis], line.b[axis], along[base])?;
-    }
-    Some((approx, exact))
+        rounded(line.a[axis], line.b[axis], along[base])
+    };
+    Some(([coordinate(0)?, coordinate(1)?], fixed.map(|v| v.is_some())))
 }
 
 /// The parameters of the crossing along `l` (`l.a + (l.b − l.a)·λ`) and along `m`, each with a bound on its

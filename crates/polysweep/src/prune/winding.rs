@@ -42,16 +42,16 @@ impl KnownWinding {
             // of a coordinate is monotone in it).
             let cell = |p: Point| [grid.cell(p.x, 0), grid.cell(p.y, 1)];
             let (mut a, [mut ca, mut ra]) = (last, cell(last));
-            let mut counted = [[usize::MAX; 2]; 2];
+            let mut counted = (usize::MAX, usize::MAX, usize::MAX, usize::MAX);
             for &b in ring {
                 let [cb, rb] = cell(b);
-                let range = [[ca.min(cb), ca.max(cb)], [ra.min(rb), ra.max(rb)]];
-                // (Most edges are short: one after another in one cell, which is counted once.)
-                if counted != range {
-                    grid.count_range(&mut touches, range);
-                    counted = range;
+                let (c0, c1, r0, r1) = (ca.min(cb), ca.max(cb), ra.min(rb), ra.max(rb));
+                // (Most edges are short: one after another in one cell, which is counted once. Compared as a tuple,
+                // word by word: as arrays, the range just stored was read back as one wide word, which stalls.)
+                if counted != (c0, c1, r0, r1) {
+                    grid.count_range(&mut touches, [[c0, c1], [r0, r1]]);
+                    counted = (c0, c1, r0, r1);
                 }
-                let [[_, c1], [r0, r1]] = range;
                 steps += r1 - r0 + 1;
                 if steps > budget {
                     return KnownWinding {
