@@ -46,10 +46,11 @@ mod copy;
 mod grid;
 mod winding;
 
-use crate::geometry::{MultiPolygon, Polygon};
+use crate::geometry::{closed, MultiPolygon, Point, Polygon};
 use crate::input::Bounds;
 use crate::options::Shortcuts;
 use crate::select::{FillRule, Operation};
+use crate::validate::{locate, Side};
 use convex::inside_one_convex;
 use copy::{copied_apart, copied_whole};
 use grid::{Coverage, Grid};
@@ -180,10 +181,14 @@ fn inside_subject(
     let subject_vertices = subject.vertex_count();
     // A union leaves out only clipping polygons inside the subject, away from its edges: each inside one subject
     // polygon, and so within its box.
+    // A difference leaves out only clipping polygons outside the subject: where every one sampled starts inside it
+    // (holes punched into the subject's polygons), the grid is not made.
     if clipping.0.len() < MIN_POLYGONS_TO_JUDGE
         || share * clipping.vertex_count() < subject_vertices
         || (operation == Operation::Union
             && !some_sample_within_one(clipping_boxes, subject_boxes, margin))
+        || (operation == Operation::Difference
+            && !some_sample_starts_outside(clipping, subject, subject_boxes))
     {
         return vec![None; clipping.0.len()];
     }
@@ -208,6 +213,28 @@ fn some_sample_within_one(judged: &[Bounds], boxes: &[Bounds], margin: f64) -> b
     (judged.iter().step_by(step)).any(|b| {
         let grown = b.grown(margin);
         boxes.iter().any(|container| grown.within(container))
+    })
+}
+
+/// Does one at least of a sample of `judged`'s polygons start outside `operand` (its first vertex in no polygon of
+/// `operand`, whose boxes are `boxes`, or in a hole of one)? A vertex on a boundary counts as inside. Only a matter
+/// of speed, as [`some_sample_within_one`]: `false` means "these lie inside it, as a rule".
+fn some_sample_starts_outside(
+    judged: &MultiPolygon,
+    operand: &MultiPolygon,
+    boxes: &[Bounds],
+) -> bool {
+    let step = judged.0.len().div_ceil(SAMPLES).max(1);
+    let starts = (judged.0.iter().step_by(step)).filter_map(|p| p.exterior.first());
+    let in_box = |b: &Bounds, v: Point| {
+        b.min[0] <= v.x && v.x <= b.max[0] && b.min[1] <= v.y && v.y <= b.max[1]
+    };
+    let inside = |polygon: &Polygon, v: Point| {
+        locate(&closed(&polygon.exterior), v) != Side::Outside
+            && (polygon.holes.iter()).all(|hole| locate(&closed(hole), v) != Side::Inside)
+    };
+    starts.copied().any(|v| {
+        !(operand.0.iter().zip(boxes)).any(|(polygon, b)| in_box(b, v) && inside(polygon, v))
     })
 }
 
