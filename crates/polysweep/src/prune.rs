@@ -46,7 +46,7 @@ mod copy;
 mod grid;
 mod winding;
 
-use crate::geometry::{closed, MultiPolygon, Point, Polygon};
+use crate::geometry::{closed, larger, MultiPolygon, Point, Polygon};
 use crate::input::Bounds;
 use crate::options::Shortcuts;
 use crate::select::{FillRule, Operation};
@@ -210,9 +210,17 @@ const SAMPLES: usize = 16;
 /// the shortcut is not tried. Only a matter of speed: `false` means "sweep them all".
 fn some_sample_within_one(judged: &[Bounds], boxes: &[Bounds], margin: f64) -> bool {
     let step = judged.len().div_ceil(SAMPLES).max(1);
+    // A box fits within another only if it is no wider and no taller (float extents: rounding is monotone), so a
+    // sampled box larger than the largest extents (a board's cells are all one size) needs no pass over `boxes`.
+    let extent = |b: &Bounds| [b.max[0] - b.min[0], b.max[1] - b.min[1]];
+    let largest = (boxes.iter().map(extent))
+        .fold([0.0f64; 2], |m, e| [larger(m[0], e[0]), larger(m[1], e[1])]);
     (judged.iter().step_by(step)).any(|b| {
         let grown = b.grown(margin);
-        boxes.iter().any(|container| grown.within(container))
+        let [width, height] = extent(&grown);
+        width <= largest[0]
+            && height <= largest[1]
+            && boxes.iter().any(|container| grown.within(container))
     })
 }
 
