@@ -248,6 +248,39 @@ fn note_shared_vertex(shared: &mut [bool; 2], at_one_point: &[u32], edges: &[Inp
     }
 }
 
+/// [`order_at_point`] for the endpoints `at_one_point` where every edge there is vertical or horizontal (grids,
+/// boards, parcel maps), by a key of each rather than comparisons that read two edges' lines each: at a point, a
+/// right end's edge comes from the left (horizontal) or from below (vertical), a left end's goes right or up, and
+/// the lower edge comes first: the vertical one of right ends, the horizontal one of left ends; then by operand and
+/// segment, as `order_at_point` orders collinear edges. Says whether it sorted them (`false`: an edge is neither,
+/// and `at_one_point` is as it was). `keys` is working memory.
+fn sort_axis_parallel(at_one_point: &mut [u32], edges: &[InputEdge], keys: &mut Vec<u64>) -> bool {
+    keys.clear();
+    for &end in at_one_point.iter() {
+        let (segment, left) = (end / 2, end % 2 == 1);
+        let edge = &edges[segment as usize];
+        let (vertical, horizontal) = (
+            edge.line.a[0] == edge.line.b[0],
+            edge.line.a[1] == edge.line.b[1],
+        );
+        if vertical == horizontal {
+            return false;
+        }
+        let later = if left { vertical } else { horizontal };
+        keys.push(
+            (u64::from(left) << 63)
+                | (u64::from(later) << 62)
+                | (u64::from(edge.operand) << 32)
+                | u64::from(segment),
+        );
+    }
+    keys.sort_unstable();
+    for (end, key) in at_one_point.iter_mut().zip(keys.iter()) {
+        *end = 2 * (*key as u32) + (key >> 63) as u32;
+    }
+    true
+}
+
 /// Runs of vertices with one x longer than this are sorted by y as the x's are sorted, by value (see [`sort`]);
 /// shorter ones by comparison.
 const SORTED_BY_VALUE: usize = 64;
@@ -325,7 +358,7 @@ pub(crate) fn initial_events(
     let order = &mut scratch.order;
     order.clear();
     order.reserve(2 * edges.len());
-    let mut at_one_point = Vec::new();
+    let (mut at_one_point, mut axis_parallel_keys) = (Vec::new(), Vec::new());
     for same_x in vertices.chunk_by_mut(|a, b| a.0 == b.0) {
         if same_x.len() > 1 {
             // Long runs share an x (a column of a grid): by y as keys again, by value as the x's were where the
@@ -380,12 +413,14 @@ pub(crate) fn initial_events(
             } else {
                 note_shared_vertex(&mut scratch.shared_vertex, &at_one_point, edges);
             }
-            // (Right ends before left ones, as `order_at_point` begins, told without reading the edges.)
-            at_one_point.sort_unstable_by(|&a, &b| {
-                (a % 2)
-                    .cmp(&(b % 2))
-                    .then_with(|| order_at_point(exact, &at_point(a), &at_point(b)))
-            });
+            if !sort_axis_parallel(&mut at_one_point, edges, &mut axis_parallel_keys) {
+                // (Right ends before left ones, as `order_at_point` begins, told without reading the edges.)
+                at_one_point.sort_unstable_by(|&a, &b| {
+                    (a % 2)
+                        .cmp(&(b % 2))
+                        .then_with(|| order_at_point(exact, &at_point(a), &at_point(b)))
+                });
+            }
             if merge_identical {
                 any_merged |= merge_at_point(&mut at_one_point, edges, exact, merged_into);
             }

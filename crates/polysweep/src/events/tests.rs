@@ -4,9 +4,10 @@ use crate::input::add_edges;
 
 #[test]
 fn initial_events_come_in_event_order() {
-    // Rings that share vertices and edges (two squares side by side, a third touching at a corner), a ring that
-    // passes twice through one point, vertical edges, a column of points with one x, and a ring with two
-    // vertices only (its edges cancel).
+    // Rings that share vertices and edges (two squares side by side, a third touching at a corner: points where
+    // only vertical and horizontal edges meet, of both operands, ordered by key), a ring that passes twice through
+    // one point, vertical edges, a column of points with one x, and a ring with two vertices only (its edges
+    // cancel).
     let ring = |points: &[[f64; 2]]| {
         let mut ring = points.to_vec();
         ring.push(points[0]);
