@@ -157,11 +157,11 @@ impl<O: Observer> Sweep<'_, O> {
             }
             return;
         }
-        let (first, second) = match self.event_order(a, b) {
-            Less => (a, b),
-            _ => (b, a),
-        };
-        self.push_crossing(first, second);
+        // Of the two right events at `x`, the lower edge's comes first (§4), and that is `lower`'s without asking:
+        // `upper` lies above it left of `x`, where both edges come from, and so does its left end, which is off
+        // `lower`'s line (two common points would make the lines one).
+        debug_assert_eq!(self.event_order(a, b), Less);
+        self.push_crossing(a, b);
     }
 
     /// The split of Fig. 6 without Q: the edge of left event `edge`, in S, ends at `p` (strictly between its
