@@ -300,8 +300,9 @@ pub(crate) fn connect_classes(
         .collect();
     let is_shell = |r: u32| turn[r as usize] == Ordering::Greater;
     let is_hole = |r: usize| turn[r] == Ordering::Less && rings.ring(r).len() >= 3;
-    // Each edge's ring, read only to place holes (so made only where there are any).
-    let mut ring_of_edge = Vec::new();
+    // Each edge's ring, and each ring's edges into and out of its lowest-leftmost vertex: read only to place holes
+    // (so made only where there are any).
+    let (mut ring_of_edge, mut leftmost) = (Vec::new(), Vec::new());
     if (0..rings.len()).any(is_hole) {
         ring_of_edge = vec![NONE; edges.len()];
         for (r, ring) in rings.iter().enumerate() {
@@ -309,21 +310,20 @@ pub(crate) fn connect_classes(
                 ring_of_edge[e as usize] = r as u32;
             }
         }
+        let lexicographic = |a: &Point, b: &Point| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y));
+        leftmost = (rings.iter().zip(&written))
+            .map(|(ring, points)| {
+                let k = (0..ring.len())
+                    .min_by(|&i, &j| lexicographic(&points[i], &points[j]))
+                    .expect("rings are not empty");
+                [ring[(k + ring.len() - 1) % ring.len()], ring[k]]
+            })
+            .collect();
     }
     // The ring of the result edge below ring `r`'s lowest edge at its leftmost vertex (asked for holes only, so
-    // the edge below is looked up only for them): the edges into and out of its lowest-leftmost vertex.
+    // the edge below is looked up only for them).
     let ring_below = |r: u32| {
-        let ring = rings.ring(r as usize);
-        let at = |k: usize| &points[edges[ring[k] as usize].from as usize];
-        let k = (0..ring.len())
-            .min_by(|&i, &j| {
-                at(i)
-                    .x
-                    .total_cmp(&at(j).x)
-                    .then(at(i).y.total_cmp(&at(j).y))
-            })
-            .expect("rings are not empty");
-        let [i, o] = [ring[(k + ring.len() - 1) % ring.len()], ring[k]].map(|e| e as usize);
+        let [i, o] = leftmost[r as usize].map(|e: u32| e as usize);
         [edges[i].below, edges[o].below]
             .into_iter()
             .filter(|&b| b != NONE)
