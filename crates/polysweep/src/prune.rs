@@ -234,15 +234,13 @@ fn some_sample_starts_outside(
 ) -> bool {
     let step = judged.0.len().div_ceil(SAMPLES).max(1);
     let starts = (judged.0.iter().step_by(step)).filter_map(|p| p.exterior.first());
-    let in_box = |b: &Bounds, v: Point| {
-        b.min[0] <= v.x && v.x <= b.max[0] && b.min[1] <= v.y && v.y <= b.max[1]
-    };
     let inside = |polygon: &Polygon, v: Point| {
         locate(&closed(&polygon.exterior), v) != Side::Outside
             && (polygon.holes.iter()).all(|hole| locate(&closed(hole), v) != Side::Inside)
     };
     starts.copied().any(|v| {
-        !(operand.0.iter().zip(boxes)).any(|(polygon, b)| in_box(b, v) && inside(polygon, v))
+        !(operand.0.iter().zip(boxes))
+            .any(|(polygon, b)| Bounds::at(&v).within(b) && inside(polygon, v))
     })
 }
 
