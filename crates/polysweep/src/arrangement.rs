@@ -314,6 +314,7 @@ impl Arrangement {
             &mut edges,
             below,
             &class,
+            &mut Default::default(),
         );
         polygon_class.into_iter().zip(polygons.0).collect()
     }

@@ -24,6 +24,7 @@ use crate::exact::{Exact, SweepPoint};
 use crate::geometry::{ring_area, MultiPolygon, Point, Polygon, Ring};
 use crate::rounding::{merge_rounded, rounding_made_vertical, sign_survives_rounding};
 use crate::validate::Side;
+use crate::workspace::bytes_of;
 use std::cmp::Ordering;
 
 /// The exact predicates, and the input edges whose lines the result edges lie on.
@@ -76,9 +77,74 @@ fn next_edge(
     })
 }
 
+/// The working tables of [`connect`], kept from one operation to the next with the sweep's vectors (see
+/// [`crate::workspace`]): they are as long as the result, and fresh memory for them cost a page fault per 4 KB page
+/// at every operation, a tenth of the time of a dense arrangement's intersection. What they hold is overwritten.
+/// Indices here are `u32`, as the sweep's are: these tables can be millions of edges long.
+#[derive(Default)]
+pub(crate) struct ConnectTables {
+    /// Each sweep vertex's output vertex, and the output vertices' points (see [`merge_rounded`]).
+    vertex_ids: Vec<u32>,
+    points: Vec<Point>,
+    /// The exact vertices of each result edge, before rounding merges some of them.
+    exact_ends: Vec<(u32, u32)>,
+    walk: Walk,
+    rings: Rings,
+    /// Each ring as it is written out, its orientation, and its polygon.
+    written: Vec<Ring>,
+    turn: Vec<Ordering>,
+    polygon_of_ring: Vec<u32>,
+    /// Each edge's ring, and each ring's edges into and out of its lowest-leftmost vertex (where there are holes).
+    ring_of_edge: Vec<u32>,
+    leftmost: Vec<[u32; 2]>,
+}
+
+impl ConnectTables {
+    /// The bytes they hold (see [`crate::workspace`]).
+    pub fn bytes(&self) -> usize {
+        let walk = &self.walk;
+        bytes_of(&self.vertex_ids)
+            + bytes_of(&self.points)
+            + bytes_of(&self.exact_ends)
+            + bytes_of(&walk.first_out)
+            + bytes_of(&walk.outgoing)
+            + bytes_of(&walk.used)
+            + bytes_of(&walk.position_on_path)
+            + bytes_of(&walk.path_vertices)
+            + bytes_of(&walk.path_edges)
+            + bytes_of(&self.rings.edges)
+            + bytes_of(&self.rings.starts)
+            + bytes_of(&self.written)
+            + bytes_of(&self.turn)
+            + bytes_of(&self.polygon_of_ring)
+            + bytes_of(&self.ring_of_edge)
+            + bytes_of(&self.leftmost)
+    }
+}
+
+/// The ring walk's tables (see [`walk_rings`]).
+#[derive(Default)]
+struct Walk {
+    /// Where each vertex's outgoing edges begin in `outgoing`.
+    first_out: Vec<u32>,
+    outgoing: Vec<u32>,
+    used: Vec<bool>,
+    /// Each vertex's place on the path being walked, or `NONE`.
+    position_on_path: Vec<u32>,
+    /// The path walked from a start: its vertices and edges.
+    path_vertices: Vec<u32>,
+    path_edges: Vec<u32>,
+}
+
+/// `v` emptied and filled with `len` copies of `value`.
+fn refill<T: Clone>(v: &mut Vec<T>, len: usize, value: T) {
+    v.clear();
+    v.resize(len, value);
+}
+
 /// Rings as lists of edge indices, one after the other in one vector (rather than a vector each: a result can
-/// have tens of thousands of rings). Indices here and in the walk's tables are `u32`, as the sweep's are: these
-/// tables are as long as the result, which can be millions of edges.
+/// have tens of thousands of rings).
+#[derive(Default)]
 struct Rings {
     edges: Vec<u32>,
     /// Where each ring's edges begin in `edges`, and where the last one ends.
@@ -86,6 +152,11 @@ struct Rings {
 }
 
 impl Rings {
+    fn clear(&mut self) {
+        self.edges.clear();
+        self.starts.clear();
+    }
+
     fn push(&mut self, ring: &[u32]) {
         if self.starts.is_empty() {
             self.starts.push(0);
@@ -107,35 +178,47 @@ impl Rings {
     }
 }
 
-/// Walks the result edges into simple rings, each as its list of edge indices; with `class` (one per edge, or
-/// none), each ring of edges of one class.
-fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge], class: &[u32]) -> Rings {
+/// Walks the result edges into simple rings, each as its list of edge indices, written into `rings`; with `class`
+/// (one per edge, or none), each ring of edges of one class.
+fn walk_rings(
+    lines: Lines,
+    vertex_count: usize,
+    edges: &[ResultEdge],
+    class: &[u32],
+    walk: &mut Walk,
+    rings: &mut Rings,
+) {
+    let Walk {
+        first_out,
+        outgoing,
+        used,
+        position_on_path,
+        path_vertices,
+        path_edges,
+    } = walk;
     // Edges leaving each vertex, bucketed (counting sort by `from`): each vertex's edges are filled in from the
     // end of its range, which leaves `first_out` at the range's beginning.
-    let mut first_out = vec![0u32; vertex_count + 1];
+    refill(first_out, vertex_count + 1, 0);
     for e in edges {
         first_out[e.from as usize] += 1;
     }
     for v in 0..vertex_count {
         first_out[v + 1] += first_out[v];
     }
-    let mut outgoing = vec![0u32; edges.len()];
+    refill(outgoing, edges.len(), 0);
     for (i, e) in edges.iter().enumerate().rev() {
         let slot = &mut first_out[e.from as usize];
         *slot -= 1;
         outgoing[*slot as usize] = i as u32;
     }
     // Edges that rounding shrank to a point are no part of any ring.
-    let mut used: Vec<bool> = edges.iter().map(|e| e.from == e.to).collect();
-    let mut position_on_path = vec![NONE; vertex_count];
+    used.clear();
+    used.extend(edges.iter().map(|e| e.from == e.to));
+    refill(position_on_path, vertex_count, NONE);
     // Every edge is in one ring at most: room for all, so that the vector is not copied as it grows.
-    let mut rings = Rings {
-        edges: Vec::with_capacity(edges.len()),
-        starts: Vec::new(),
-    };
-    // The path walked from `start`: its vertices and edges (kept from one start to the next, for their room).
-    let (mut path_vertices, mut path_edges): (Vec<u32>, Vec<u32>) = (Vec::new(), Vec::new());
-    for &start in &outgoing {
+    rings.clear();
+    rings.edges.reserve(edges.len());
+    for &start in outgoing.iter() {
         let start = start as usize;
         if used[start] {
             continue;
@@ -176,11 +259,10 @@ fn walk_rings(lines: Lines, vertex_count: usize, edges: &[ResultEdge], class: &[
                 None => break,
             }
         }
-        for &w in &path_vertices {
+        for &w in path_vertices.iter() {
             position_on_path[w as usize] = NONE;
         }
     }
-    rings
 }
 
 /// The polygon with the smallest exterior that contains `hole`, by exact point-in-ring tests of its vertices, among
@@ -212,16 +294,17 @@ fn innermost_shell_around(
 ///
 /// Rounding is the one inexact step. A vertex moves by at most half an ulp; where several exact vertices round to
 /// one point they become one vertex (a pinch, cut by the walk), edges that shrink to nothing are dropped, and so
-/// are rings whose rounded area is zero.
+/// are rings whose rounded area is zero. `tables` is working memory.
 pub(crate) fn connect(
     exact: &Exact,
     input: &[InputEdge],
     vertices: &[SweepPoint],
     edges: &mut [ResultEdge],
     below_edge: impl Fn(u32) -> u32,
+    tables: &mut ConnectTables,
 ) -> (MultiPolygon, bool) {
     let (result, _, made_vertical) =
-        connect_classes(exact, input, vertices, edges, below_edge, &[]);
+        connect_classes(exact, input, vertices, edges, below_edge, &[], tables);
     (result, made_vertical)
 }
 
@@ -234,92 +317,103 @@ pub(crate) fn connect_classes(
     edges: &mut [ResultEdge],
     below_edge: impl Fn(u32) -> u32,
     class: &[u32],
+    tables: &mut ConnectTables,
 ) -> (MultiPolygon, Vec<u32>, bool) {
-    let (vertex_ids, points, x_rounded_onto_another) = merge_rounded(vertices, edges);
-    // The exact vertices of each edge, before rounding merges some of them.
-    let exact_ends: Vec<(u32, u32)> = edges.iter().map(|e| (e.from, e.to)).collect();
+    let ConnectTables {
+        vertex_ids,
+        points,
+        exact_ends,
+        walk,
+        rings,
+        written,
+        turn,
+        polygon_of_ring,
+        ring_of_edge,
+        leftmost,
+    } = tables;
+    let x_rounded_onto_another = merge_rounded(vertices, edges, vertex_ids, points);
+    exact_ends.clear();
+    exact_ends.extend(edges.iter().map(|e| (e.from, e.to)));
     for e in edges.iter_mut() {
         e.from = vertex_ids[e.from as usize];
         e.to = vertex_ids[e.to as usize];
     }
     let lines = Lines { exact, input };
-    let rings = walk_rings(lines, points.len(), edges, class);
+    walk_rings(lines, points.len(), edges, class, walk, rings);
+    let rings = &*rings;
     let class_of_ring = |ring: &[u32]| class.get(ring[0] as usize).copied().unwrap_or(0);
     // Each ring as it is written out: its rounded vertices, closed (the first repeated last). Made once, and read
     // below instead of the edges, which lie scattered in memory.
-    let mut written: Vec<Ring> = rings
-        .iter()
-        .map(|ring| {
-            let mut out: Ring = Vec::with_capacity(ring.len() + 1);
-            for &e in ring {
-                out.push(points[edges[e as usize].from as usize]);
-            }
-            out.push(out[0]);
-            out
-        })
-        .collect();
+    written.clear();
+    written.extend(rings.iter().map(|ring| {
+        let mut out: Ring = Vec::with_capacity(ring.len() + 1);
+        for &e in ring {
+            out.push(points[edges[e as usize].from as usize]);
+        }
+        out.push(out[0]);
+        out
+    }));
     // Orientation of the rounded ring (its signed area). Where rounding could have flipped it (a ring thin enough),
     // it is checked exactly at the ring's first exact vertex in sweep order (exact vertex ids follow the sweep;
     // rounding can merge a later exact vertex into an earlier one, so the rounded vertices' order is not the exact
     // one): the turn at an extreme vertex of a closed ring is its orientation. A ring whose rounded copy has no
     // area, or the opposite orientation, is a sliver thinner than rounding: it is dropped (`Equal`).
-    let turn: Vec<Ordering> = (rings.iter().zip(&written))
-        .map(|(ring, rounded)| {
-            let area = ring_area(rounded);
-            let rounded_turn = area.partial_cmp(&0.0).unwrap_or(Ordering::Equal);
-            if sign_survives_rounding(rounded, area) {
-                return rounded_turn;
-            }
-            let k = (0..ring.len())
-                .min_by_key(|&k| exact_ends[ring[k] as usize].0)
-                .expect("rings are not empty");
-            let [incoming, outgoing] =
-                [ring[(k + ring.len() - 1) % ring.len()], ring[k]].map(|e| e as usize);
-            let exact_turn = lines.cross(&edges[incoming], &edges[outgoing]);
-            // Where rounding merged vertices, the two edges need not meet at one exact point (an edge that shrank
-            // to nothing was between them, and they can even run back along each other), or the ring can pass
-            // straight through: then the turn says nothing and only the rounded orientation tells.
-            let meet_exactly = exact_ends[incoming].1 == exact_ends[outgoing].0;
-            // A ring written exactly (no vertex of it rounded) is not turned by rounding: its float area can only
-            // have been summed wrong (a sliver), and its exact turn is its orientation.
-            let written_exactly = || {
-                (ring.iter()).all(|&e| {
-                    let v = &vertices[exact_ends[e as usize].0 as usize];
-                    v.is_exact(0) && v.is_exact(1)
-                })
-            };
-            if meet_exactly && exact_turn != Ordering::Equal && written_exactly() {
-                return exact_turn;
-            }
-            if !meet_exactly || exact_turn == Ordering::Equal || exact_turn == rounded_turn {
-                rounded_turn
-            } else {
-                Ordering::Equal
-            }
-        })
-        .collect();
+    turn.clear();
+    turn.extend((rings.iter().zip(written.iter())).map(|(ring, rounded)| {
+        let area = ring_area(rounded);
+        let rounded_turn = area.partial_cmp(&0.0).unwrap_or(Ordering::Equal);
+        if sign_survives_rounding(rounded, area) {
+            return rounded_turn;
+        }
+        let k = (0..ring.len())
+            .min_by_key(|&k| exact_ends[ring[k] as usize].0)
+            .expect("rings are not empty");
+        let [incoming, outgoing] =
+            [ring[(k + ring.len() - 1) % ring.len()], ring[k]].map(|e| e as usize);
+        let exact_turn = lines.cross(&edges[incoming], &edges[outgoing]);
+        // Where rounding merged vertices, the two edges need not meet at one exact point (an edge that shrank
+        // to nothing was between them, and they can even run back along each other), or the ring can pass
+        // straight through: then the turn says nothing and only the rounded orientation tells.
+        let meet_exactly = exact_ends[incoming].1 == exact_ends[outgoing].0;
+        // A ring written exactly (no vertex of it rounded) is not turned by rounding: its float area can only
+        // have been summed wrong (a sliver), and its exact turn is its orientation.
+        let written_exactly = || {
+            (ring.iter()).all(|&e| {
+                let v = &vertices[exact_ends[e as usize].0 as usize];
+                v.is_exact(0) && v.is_exact(1)
+            })
+        };
+        if meet_exactly && exact_turn != Ordering::Equal && written_exactly() {
+            return exact_turn;
+        }
+        if !meet_exactly || exact_turn == Ordering::Equal || exact_turn == rounded_turn {
+            rounded_turn
+        } else {
+            Ordering::Equal
+        }
+    }));
+    let turn = &*turn;
     let is_shell = |r: u32| turn[r as usize] == Ordering::Greater;
     let is_hole = |r: usize| turn[r] == Ordering::Less && rings.ring(r).len() >= 3;
     // Each edge's ring, and each ring's edges into and out of its lowest-leftmost vertex: read only to place holes
     // (so made only where there are any).
-    let (mut ring_of_edge, mut leftmost) = (Vec::new(), Vec::new());
     if (0..rings.len()).any(is_hole) {
-        ring_of_edge = vec![NONE; edges.len()];
+        refill(ring_of_edge, edges.len(), NONE);
         for (r, ring) in rings.iter().enumerate() {
             for &e in ring {
                 ring_of_edge[e as usize] = r as u32;
             }
         }
         let lexicographic = |a: &Point, b: &Point| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y));
-        leftmost = (rings.iter().zip(&written))
-            .map(|(ring, points)| {
-                let k = (0..ring.len())
-                    .min_by(|&i, &j| lexicographic(&points[i], &points[j]))
-                    .expect("rings are not empty");
-                [ring[(k + ring.len() - 1) % ring.len()], ring[k]]
-            })
-            .collect();
+        leftmost.clear();
+        leftmost.extend((rings.iter().zip(written.iter())).map(|(ring, points)| {
+            let k = (0..ring.len())
+                .min_by(|&i, &j| lexicographic(&points[i], &points[j]))
+                .expect("rings are not empty");
+            [ring[(k + ring.len() - 1) % ring.len()], ring[k]]
+        }));
     }
+    let (ring_of_edge, leftmost) = (&*ring_of_edge, &*leftmost);
     // The ring of the result edge below ring `r`'s lowest edge at its leftmost vertex (asked for holes only, so
     // the edge below is looked up only for them).
     let ring_below = |r: u32| {
@@ -332,7 +426,7 @@ pub(crate) fn connect_classes(
             .map(|b| ring_of_edge[b as usize])
             .find(|&b| b != NONE && b != r)
     };
-    let mut polygon_of_ring = vec![NONE; rings.len()];
+    refill(polygon_of_ring, rings.len(), NONE);
     let mut polygons: Vec<Polygon> = Vec::with_capacity(rings.len());
     let mut polygon_class = Vec::new();
     for (r, ring) in rings.iter().enumerate() {
@@ -375,6 +469,7 @@ pub(crate) fn connect_classes(
             polygons[p].holes.push(hole);
         }
     }
-    let made_vertical = x_rounded_onto_another && rounding_made_vertical(input, edges, &points);
+    let made_vertical = x_rounded_onto_another && rounding_made_vertical(input, edges, points);
+    written.clear(); // (the rings dropped, not kept with the tables)
     (MultiPolygon(polygons), polygon_class, made_vertical)
 }

@@ -235,6 +235,18 @@ pub(crate) struct SortScratch {
     pub merged_into: Vec<u32>,
 }
 
+impl SortScratch {
+    /// The bytes it holds (see [`crate::workspace`]).
+    pub fn bytes(&self) -> usize {
+        use crate::workspace::bytes_of;
+        bytes_of(&self.keys)
+            + self.buckets.bytes()
+            + bytes_of(&self.order)
+            + bytes_of(&self.position)
+            + bytes_of(&self.merged_into)
+    }
+}
+
 /// Notes in `shared` each operand with more than two of the endpoints `at_one_point`: found where the sort already
 /// looks at every endpoint at a point where several vertices meet, so it costs nothing elsewhere.
 #[cold]
@@ -440,7 +452,7 @@ pub(crate) fn initial_events(
     // Room for a quarter as many events again from subdivision before the vector has to move (and be copied):
     // more than Table 1's workloads add. Room never used costs address space, not memory: its pages are never
     // touched.
-    events.reserve(order.len() + order.len() / 4);
+    crate::workspace::reserve(&mut events, order.len() + order.len() / 4);
     events.extend(order.iter().map(|&end| {
         let segment = end / 2;
         let other = position[end as usize ^ 1];

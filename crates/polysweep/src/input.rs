@@ -193,7 +193,7 @@ pub(crate) fn add_edges(
     operand: Operand,
     which: impl IntoIterator<Item = usize>,
 ) {
-    edges.reserve(polygons.vertex_count()); // at most one edge per vertex
+    crate::workspace::reserve(edges, polygons.vertex_count()); // at most one edge per vertex
     for p in which {
         for ring in polygons.0[p].rings() {
             add_ring_edges(edges, ring, operand);

@@ -279,6 +279,7 @@ fn sweep_once(
         &sweep.vertices,
         &mut sweep.result,
         |e| events[e as usize].result_edge(),
+        &mut workspace.connect,
     );
     sweep.give_back(workspace);
     Ok((result, stats, suspect || made_vertical))

@@ -136,16 +136,21 @@ const LONG_RANGE: usize = 64;
 /// that round to the same floats become one vertex. Vertices on no result edge (most of them, when little of the
 /// input is kept) are left out, so that the ring walk's tables are only as large as the result. Also says whether
 /// two of them round to one x, one of them from a crossing whose x is not a float (see [`rounding_made_vertical`]).
+/// The output vertices are written into `ids`, by sweep vertex, and their points into `points` (both emptied first).
 pub(crate) fn merge_rounded(
     vertices: &[SweepPoint],
     edges: &[ResultEdge],
-) -> (Vec<u32>, Vec<Point>, bool) {
+    ids: &mut Vec<u32>,
+    points: &mut Vec<Point>,
+) -> bool {
     // `NONE` for a vertex on no result edge; the others are marked (0) here and numbered below.
-    let mut ids: Vec<u32> = vec![NONE; vertices.len()];
+    ids.clear();
+    ids.resize(vertices.len(), NONE);
     for e in edges {
         (ids[e.from as usize], ids[e.to as usize]) = (0, 0);
     }
-    let mut points: Vec<Point> = Vec::with_capacity(edges.len());
+    points.clear();
+    points.reserve(edges.len());
     // Rounding is monotone, so the vertices that round to one x are consecutive in sweep order. While they all
     // have that x exactly (input vertices, and crossings on a vertical line or a grid's column), they come in y
     // order, so those that round to one point are consecutive too: each is compared with the one before. Once a
@@ -194,7 +199,7 @@ pub(crate) fn merge_rounded(
             x_rounded_onto_another |= block.len() > 1;
         }
     }
-    (ids, points, x_rounded_onto_another)
+    x_rounded_onto_another
 }
 
 /// Did rounding make a result edge vertical? The sweep meets the points of one x in y order, so an edge narrower
@@ -291,7 +296,8 @@ mod tests {
                 below: NONE,
             })
             .collect();
-        let (ids, points, _) = merge_rounded(&vertices, &edges);
+        let (mut ids, mut points) = (Vec::new(), Vec::new());
+        merge_rounded(&vertices, &edges, &mut ids, &mut points);
         for (a, b) in pairs {
             assert_eq!(ids[a], ids[b]);
         }

@@ -45,7 +45,7 @@ use crate::options::Shortcuts;
 use crate::select::{Flags, Selection};
 use crate::structure::Watch;
 use crate::trace::{Observer, Silent};
-use crate::workspace::{room, take, Workspace};
+use crate::workspace::{reserve, room, take, Workspace};
 
 mod close_calls;
 mod shortcuts;
@@ -146,9 +146,9 @@ impl<'a, O: Observer> Sweep<'a, O> {
         // the events have room for, and for a result edge per input edge (a union of polygons apart keeps them
         // all), so that these vectors seldom move.
         let mut vertices = take(&mut workspace.vertices);
-        vertices.reserve(events.len() / 2 + events.len() / 8);
+        reserve(&mut vertices, events.len() / 2 + events.len() / 8);
         let mut result = take(&mut workspace.result);
-        result.reserve(events.len() / 2);
+        reserve(&mut result, events.len() / 2);
         Sweep {
             edges,
             events,

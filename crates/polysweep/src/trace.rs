@@ -231,6 +231,7 @@ pub fn trace_with_status_for(
         &sweep.vertices,
         &mut sweep.result,
         |e| events[e as usize].result_edge(),
+        &mut Default::default(),
     );
     for (p, polygon) in result.0.iter().enumerate() {
         for (r, ring) in polygon.rings().enumerate() {

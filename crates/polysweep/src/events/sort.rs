@@ -41,8 +41,11 @@ pub(crate) struct Buckets<T> {
 impl<T> Buckets<T> {
     /// The bytes it holds (see [`crate::workspace`]).
     pub fn bytes(&self) -> usize {
-        self.sorted.capacity() * std::mem::size_of::<(u64, T)>()
-            + 4 * (self.of_item.capacity() + self.starts.capacity() + self.next.capacity())
+        use crate::workspace::bytes_of;
+        bytes_of(&self.sorted)
+            + bytes_of(&self.of_item)
+            + bytes_of(&self.starts)
+            + bytes_of(&self.next)
     }
 }
 
