@@ -98,7 +98,31 @@ pub(crate) fn with<R>(keep: bool, operation: impl FnOnce(&mut Workspace) -> R) -
 /// Is there room for `more` elements in `v`? It grows as a push would (doubling), but says so where the allocator
 /// has no memory left, where a push would abort the process (or trap, in wasm).
 pub(crate) fn room<T>(v: &mut Vec<T>, more: usize) -> bool {
-    if v.capacity() - v.len() >= more {
+    v.capacity() - v.len() >= more || grow(v, more)
+}
+
+/// Grows `v` by `more` elements at least (doubling), or says that there is no memory for it.
+///
+/// Where it becomes large, it is moved into a new allocation advised huge pages before the copy: the allocator's
+/// own growth copies into fresh memory it has not been told about (a fault per 4 KiB), except for allocations it
+/// maps on their own, which it moves without copying. glibc maps allocations of 32 MiB and more on their own
+/// (smaller ones, as it goes), so those are left to it.
+#[cold]
+#[inline(never)]
+fn grow<T>(v: &mut Vec<T>, more: usize) -> bool {
+    const MAPPED_ON_THEIR_OWN: usize = 32 << 20;
+    let wanted = (v.len() + more).max(2 * v.capacity());
+    if cfg!(target_os = "linux")
+        && wanted * size_of::<T>() >= LARGE
+        && v.capacity() * size_of::<T>() < MAPPED_ON_THEIR_OWN
+    {
+        let mut grown = Vec::new();
+        if grown.try_reserve_exact(wanted).is_err() {
+            return false;
+        }
+        advise_huge_pages(&grown);
+        grown.append(v);
+        *v = grown;
         return true;
     }
     let grown = v.try_reserve(more).is_ok();
@@ -117,6 +141,9 @@ pub(crate) fn reserve<T>(v: &mut Vec<T>, more: usize) {
     }
 }
 
+/// The size from which a vector is advised huge pages (see [`advise_huge_pages`]).
+const LARGE: usize = 4 << 20;
+
 /// Asks Linux to back the memory of `v`, where it is large, with transparent huge pages: a page fault per 2 MiB
 /// written instead of one per 4 KiB. The sweep writes its vectors once, front to back, so on a large operation
 /// with memory fresh from the system the faults were most of the time: on the benchmark's machine (a virtual
@@ -125,8 +152,9 @@ pub(crate) fn reserve<T>(v: &mut Vec<T>, more: usize) {
 /// splits it, and the allocator can then no longer grow it in place (it copies instead). Where the system's
 /// setting is `never`, and on other systems, nothing changes.
 #[cfg(target_os = "linux")]
+#[cold]
+#[inline(never)]
 fn advise_huge_pages<T>(v: &Vec<T>) {
-    const LARGE: usize = 4 << 20;
     let bytes = v.capacity() * size_of::<T>();
     if bytes < LARGE {
         return;
@@ -222,13 +250,15 @@ mod tests {
         assert_eq!(difference(&around_small, &small).unwrap(), fresh[2]);
     }
 
-    /// The huge pages' advice covers a large vector's whole mapping, as one mapping with the flag (`hg` in
+    /// The huge pages' advice covers a grown large vector's whole mapping, as one mapping with the flag (`hg` in
     /// /proc/self/smaps): advising a part splits the mapping, and the allocator can then no longer grow it in place.
     #[cfg(target_os = "linux")]
     #[test]
     fn a_large_vector_is_advised_huge_pages_as_one_mapping() {
-        let mut v: Vec<u64> = Vec::new();
+        // (Grown from a small vector, whose elements move into the new one.)
+        let mut v: Vec<u64> = (0..1000).collect();
         assert!(room(&mut v, (16 << 20) / 8));
+        assert!(v.iter().copied().eq(0..1000));
         let (start, end) = (v.as_ptr() as usize, v.as_ptr() as usize + (16 << 20));
         let smaps = std::fs::read_to_string("/proc/self/smaps").unwrap();
         let mut lines = smaps.lines();
