@@ -218,7 +218,10 @@ fn walk_rings(
     // Every edge is in one ring at most: room for all, so that the vector is not copied as it grows.
     rings.clear();
     rings.edges.reserve(edges.len());
-    for &start in outgoing.iter() {
+    // (As slices, whose bounds stay in registers: through the vectors, the walk read them again at every step.)
+    let (first_out, outgoing) = (first_out.as_slice(), outgoing.as_slice());
+    let (used, position_on_path) = (used.as_mut_slice(), position_on_path.as_mut_slice());
+    for &start in outgoing {
         let start = start as usize;
         if used[start] {
             continue;

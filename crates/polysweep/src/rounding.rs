@@ -146,6 +146,7 @@ pub(crate) fn merge_rounded(
     // `NONE` for a vertex on no result edge; the others are marked (0) here and numbered below.
     ids.clear();
     ids.resize(vertices.len(), NONE);
+    let ids = ids.as_mut_slice(); // (its bounds kept in registers)
     for e in edges {
         (ids[e.from as usize], ids[e.to as usize]) = (0, 0);
     }
