@@ -47,7 +47,9 @@
 //! ## Memory
 //! Each thread keeps the working memory of its last operation (its largest vectors, emptied) for the next one, up
 //! to [`KEEP_BYTES`]: memory fresh from the system costs a page fault per page on first use, which made up a fifth
-//! of the time of an operation on Table 1's data. [`free_working_memory`] gives it back.
+//! of the time of an operation on Table 1's data. [`free_working_memory`] gives it back. On Linux, vectors of 4 MiB
+//! and more are advised transparent huge pages (`madvise`), a fault per 2 MiB: where the system allows it (its
+//! setting `always` or `madvise`), the largest operations spend far less time on faults (docs/benchmarks.md).
 //!
 //! ## The algorithm, stage by stage
 //! The input is checked and made edges (step 1 of Fig. 5); the events are sorted (§3, Fig. 8, the order of §4);
