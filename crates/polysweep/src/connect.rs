@@ -24,7 +24,7 @@ use crate::exact::{Exact, SweepPoint};
 use crate::geometry::{ring_area, MultiPolygon, Point, Polygon, Ring};
 use crate::rounding::{merge_rounded, rounding_made_vertical, sign_survives_rounding};
 use crate::validate::Side;
-use crate::workspace::bytes_of;
+use crate::workspace::{bytes_of, refill};
 use std::cmp::Ordering;
 
 /// The exact predicates, and the input edges whose lines the result edges lie on.
@@ -134,12 +134,6 @@ struct Walk {
     /// The path walked from a start: its vertices and edges.
     path_vertices: Vec<u32>,
     path_edges: Vec<u32>,
-}
-
-/// `v` emptied and filled with `len` copies of `value`.
-fn refill<T: Clone>(v: &mut Vec<T>, len: usize, value: T) {
-    v.clear();
-    v.resize(len, value);
 }
 
 /// Rings as lists of edge indices, one after the other in one vector (rather than a vector each: a result can

@@ -439,9 +439,8 @@ pub(crate) fn initial_events(
             order.extend_from_slice(&at_one_point);
         }
     }
-    scratch.position.clear();
     // By endpoint: more than `order` where edges were merged.
-    scratch.position.resize(2 * edges.len(), 0);
+    crate::workspace::refill(&mut scratch.position, 2 * edges.len(), 0);
     // (As slices, whose bounds stay in registers: through the vectors, a loop may read them again at every step,
     // as it cannot tell that what it writes does not change them.)
     let (order, position) = (scratch.order.as_slice(), scratch.position.as_mut_slice());

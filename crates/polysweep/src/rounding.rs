@@ -9,6 +9,7 @@
 use crate::edges::{InputEdge, ResultEdge, NONE};
 use crate::exact::SweepPoint;
 use crate::geometry::{larger, Point};
+use crate::workspace::refill;
 use std::collections::HashMap;
 
 /// Is the sign of `area`, the area of the rounded `ring` as `ring_area` computes it, that of the exact ring's? It
@@ -144,8 +145,7 @@ pub(crate) fn merge_rounded(
     points: &mut Vec<Point>,
 ) -> bool {
     // `NONE` for a vertex on no result edge; the others are marked (0) here and numbered below.
-    ids.clear();
-    ids.resize(vertices.len(), NONE);
+    refill(ids, vertices.len(), NONE);
     let ids = ids.as_mut_slice(); // (its bounds kept in registers)
     for e in edges {
         (ids[e.from as usize], ids[e.to as usize]) = (0, 0);

@@ -68,6 +68,12 @@ pub(crate) fn bytes_of<T>(v: &Vec<T>) -> usize {
     v.capacity() * size_of::<T>()
 }
 
+/// `v` emptied and filled with `len` copies of `value` (a kept vector, its room reused).
+pub(crate) fn refill<T: Clone>(v: &mut Vec<T>, len: usize, value: T) {
+    v.clear();
+    v.resize(len, value);
+}
+
 /// `slot`'s vector, emptied, leaving an empty one (without memory) in its place until it is given back.
 pub(crate) fn take<T>(slot: &mut Vec<T>) -> Vec<T> {
     let mut v = std::mem::take(slot);
@@ -111,9 +117,10 @@ pub(crate) fn room<T>(v: &mut Vec<T>, more: usize) -> bool {
 #[inline(never)]
 fn grow<T>(v: &mut Vec<T>, more: usize) -> bool {
     const MAPPED_ON_THEIR_OWN: usize = 32 << 20;
-    let wanted = (v.len() + more).max(2 * v.capacity());
+    // (Saturating: a request too large for memory fails below, as out of memory, rather than overflowing here.)
+    let wanted = (v.len().saturating_add(more)).max(v.capacity().saturating_mul(2));
     if cfg!(target_os = "linux")
-        && wanted * size_of::<T>() >= LARGE
+        && wanted.saturating_mul(size_of::<T>()) >= LARGE
         && v.capacity() * size_of::<T>() < MAPPED_ON_THEIR_OWN
     {
         let mut grown = Vec::new();

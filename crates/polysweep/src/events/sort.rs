@@ -7,6 +7,8 @@
 //! library's sort, with far fewer unpredictable branches; more buckets cost more than they save. Keys that bunch in few buckets (a grid's columns, a cluster far from an
 //! outlier) are sorted there by comparison, as before.
 
+use crate::workspace::refill;
+
 /// The bits of a finite float as an integer that orders like the float, with -0 equal to 0.
 pub(crate) fn ordered_bits(v: f64) -> u64 {
     let bits = (v + 0.0).to_bits(); // -0 + 0 is +0
@@ -77,8 +79,7 @@ pub(crate) fn sort_by_key<T: Copy + Default>(items: &mut [(u64, T)], memory: &mu
         starts,
         next,
     } = memory;
-    starts.clear();
-    starts.resize(buckets + 1, 0);
+    refill(starts, buckets + 1, 0);
     of_item.clear();
     of_item.extend(items.iter().map(|&(key, _)| {
         let b = bucket(key);
@@ -88,8 +89,7 @@ pub(crate) fn sort_by_key<T: Copy + Default>(items: &mut [(u64, T)], memory: &mu
     for b in 1..=buckets {
         starts[b] += starts[b - 1];
     }
-    sorted.clear();
-    sorted.resize(items.len(), (0, T::default()));
+    refill(sorted, items.len(), (0, T::default()));
     next.clear();
     next.extend_from_slice(starts);
     for (&item, &b) in items.iter().zip(of_item.iter()) {
